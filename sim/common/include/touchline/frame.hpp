@@ -1,0 +1,97 @@
+#pragma once
+// The contract between the world and the robots, free of any transport: what a robot
+// senses at the start of a 30 Hz camera frame and what it answers for that frame.
+// sim/ produces SenseFrame and consumes RobotAct; robot_shim/ does the reverse; the LCM
+// adapters and the in-process runner only carry these values.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace touchline {
+
+/// A pose on the field (field frame: origin at the centre, +x towards the goal team 0
+/// attacks, +y left) or in a robot's odometry frame.
+struct Pose2D {
+  float x_mm = 0;      ///< millimetres
+  float y_mm = 0;      ///< millimetres
+  float theta_rad = 0; ///< radians, counter-clockwise from +x
+};
+
+/// How one foot moves during one motion tick, in the body frame at the start of the
+/// tick (body = midpoint of the feet, +x forward, +y left).
+struct FootMotion {
+  float dx_mm = 0;      ///< forward, millimetres
+  float dy_mm = 0;      ///< left, millimetres
+  float dtheta_rad = 0; ///< counter-clockwise, radians
+};
+
+struct RobotId {
+  int team = 0;   ///< 0 or 1
+  int player = 1; ///< 1..kMaxTeamSize
+  friend bool operator==(RobotId a, RobotId b) { return a.team == b.team && a.player == b.player; }
+  friend bool operator!=(RobotId a, RobotId b) { return !(a == b); }
+  friend bool operator<(RobotId a, RobotId b) {
+    return a.team != b.team ? a.team < b.team : a.player < b.player;
+  }
+};
+
+constexpr int kMaxTeamSize = 7;
+constexpr int kMaxTicksPerFrame = 4;
+constexpr int64_t kMotionTickUs = 10000; ///< 100 Hz motion
+constexpr int kFramesPerCycle = 3;       ///< 3 camera frames (30 Hz) ...
+constexpr int kTicksPerCycle = 10;       ///< ... span exactly 10 motion ticks (100 ms)
+
+/// Index of the first motion tick of camera frame `frame`.
+constexpr int64_t first_tick_of_frame(int64_t frame) {
+  return frame * kTicksPerCycle / kFramesPerCycle;
+}
+/// Motion ticks in camera frame `frame`: 3, 3, 4, 3, 3, 4, ...
+constexpr int ticks_in_frame(int64_t frame) {
+  return static_cast<int>(first_tick_of_frame(frame + 1) - first_tick_of_frame(frame));
+}
+/// Simulated time at the start of camera frame `frame`, microseconds.
+constexpr int64_t frame_start_utime(int64_t frame) {
+  return first_tick_of_frame(frame) * kMotionTickUs;
+}
+
+/// Game states, as the GameController sends them.
+enum class GameState : int8_t { kInitial = 0, kReady = 1, kSet = 2, kPlaying = 3, kFinished = 4 };
+
+/// What one robot senses at the start of a frame.
+struct RobotSense {
+  RobotId id;
+  bool active = true; ///< false while the world treats the robot as crashed
+  Pose2D truth;       ///< ground-truth body pose, field frame
+  float ball_x_mm = 0, ball_y_mm = 0; ///< ground-truth ball, field frame
+};
+
+/// World -> robots, once per camera frame.
+struct SenseFrame {
+  int64_t utime = 0;  ///< simulated time at the frame start, microseconds
+  int64_t frame = 0;  ///< camera frame index
+  int motion_ticks = 3;
+  GameState game_state = GameState::kPlaying;
+  std::vector<RobotSense> robots;
+
+  const RobotSense* find(RobotId id) const {
+    for (const auto& r : robots)
+      if (r.id == id) return &r;
+    return nullptr;
+  }
+};
+
+/// Robot -> world: the answer to one frame.
+struct RobotAct {
+  RobotId id;
+  int64_t frame = 0;
+  int motion_ticks = 0; ///< entries used in left/right
+  std::array<FootMotion, kMaxTicksPerFrame> left{};
+  std::array<FootMotion, kMaxTicksPerFrame> right{};
+  float head_yaw_rad = 0;   ///< + left
+  float head_pitch_rad = 0; ///< + down
+  int action_type = 0;      ///< robot API ActionType of the body action
+  int32_t leds = 0;         ///< chest LED, 0xRRGGBB
+  Pose2D odometry;          ///< the walk's dead-reckoned body pose (odometry frame)
+};
+
+} // namespace touchline

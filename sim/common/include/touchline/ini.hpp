@@ -1,0 +1,40 @@
+#pragma once
+// Reads INI files into definition structs: each field is bound to "section.key" with its
+// default and a description, unknown keys and bad values are one-line errors.
+#include <stdexcept>
+#include <string>
+
+#include <boost/program_options.hpp>
+
+namespace touchline {
+
+/// A configuration problem, with a message fit for one line on stderr.
+struct ConfigError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+class IniSchema {
+ public:
+  explicit IniSchema(const std::string& caption) : options_(caption) {}
+
+  /// Binds `*field` to `key` ("section.name"); its current value is the default.
+  template <typename T>
+  IniSchema& bind(const char* key, T* field, const char* description) {
+    options_.add_options()(key, boost::program_options::value<T>(field)->default_value(*field),
+                           description);
+    return *this;
+  }
+
+  /// Reads `path`, setting every bound field present there. Throws ConfigError.
+  void read_file(const std::string& path) const;
+
+  /// Applies "section.key=value" overrides (e.g. from the command line). Throws ConfigError.
+  void apply_override(const std::string& assignment) const;
+
+  const boost::program_options::options_description& options() const { return options_; }
+
+ private:
+  boost::program_options::options_description options_;
+};
+
+} // namespace touchline

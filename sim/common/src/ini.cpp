@@ -1,0 +1,38 @@
+#include "touchline/ini.hpp"
+
+#include <fstream>
+#include <sstream>
+
+namespace po = boost::program_options;
+
+namespace touchline {
+
+namespace {
+void store_stream(const po::options_description& options, std::istream& in,
+                  const std::string& origin) {
+  try {
+    po::variables_map vm;
+    po::store(po::parse_config_file(in, options, /*allow_unregistered=*/false), vm);
+    po::notify(vm);
+  } catch (const po::error& e) {
+    throw ConfigError(origin + ": " + e.what());
+  }
+}
+} // namespace
+
+void IniSchema::read_file(const std::string& path) const {
+  std::ifstream in(path);
+  if (!in) throw ConfigError(path + ": cannot open config file");
+  store_stream(options_, in, path);
+}
+
+void IniSchema::apply_override(const std::string& assignment) const {
+  const auto eq = assignment.find('=');
+  const auto dot = assignment.find('.');
+  if (eq == std::string::npos || dot == std::string::npos || dot > eq)
+    throw ConfigError("override '" + assignment + "': expected section.key=value");
+  std::istringstream in("[" + assignment.substr(0, dot) + "]\n" + assignment.substr(dot + 1) + "\n");
+  store_stream(options_, in, "override '" + assignment + "'");
+}
+
+} // namespace touchline
