@@ -1,1 +1,170 @@
-// stub
+#include "touchline/lcm/robot_node.hpp"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <ostream>
+#include <random>
+
+#include <lcm/lcm-cpp.hpp>
+
+#include "touchline/game_state_t.hpp"
+#include "touchline/join_reply_t.hpp"
+#include "touchline/join_t.hpp"
+
+namespace touchline::transport {
+
+namespace {
+
+std::atomic<bool> g_stop{false};
+
+int64_t wall_us() {
+  using namespace std::chrono;
+  return duration_cast<microseconds>(steady_clock::now().time_since_epoch()).count();
+}
+
+/// Tells this process's joins and acts from those of another shim claiming the same robot.
+int64_t random_instance() {
+  std::mt19937_64 rng(std::random_device{}() ^ static_cast<uint64_t>(getpid()));
+  return static_cast<int64_t>(rng() >> 1) | 1;
+}
+
+class RobotNode {
+ public:
+  RobotNode(robot::Robot& robot, const RobotNodeDef& def, std::ostream& log)
+      : robot_(robot), def_(def), log_(log), lcm_(def.lcm_url), act_channel_(act_channel(robot.id())),
+        name_("robot_shim " + std::to_string(robot.id().team) + "/" + std::to_string(robot.id().player)) {
+    if (!lcm_.good())
+      throw std::runtime_error("cannot open LCM at " + def.lcm_url +
+                               " (is a multicast route on lo? see README, Networking)");
+    instance_ = def.instance ? def.instance : random_instance();
+    lcm_.subscribe(kJoinReplyChannel, &RobotNode::on_join_reply, this);
+    lcm_.subscribe(kSenseChannel, &RobotNode::on_sense, this);
+    lcm_.subscribe(kGameChannel, &RobotNode::on_game, this);
+  }
+
+  RobotExit run() {
+    if (!join()) return exit_;
+    last_heard_us_ = wall_us();
+    while (exit_ == kPlaying) {
+      if (g_stop) return RobotExit::kInterrupted;
+      lcm_.handleTimeout(200);
+      if (wall_us() - last_heard_us_ > static_cast<int64_t>(def_.world_timeout_s * 1e6)) {
+        log_ << name_ << ": sim_world silent for " << def_.world_timeout_s << " s, giving up\n" << std::flush;
+        return RobotExit::kNoWorld;
+      }
+    }
+    return exit_;
+  }
+
+ private:
+  static constexpr RobotExit kPlaying = static_cast<RobotExit>(-1);
+
+  /// Asks to play, again every 250 ms, until the world answers.
+  bool join() {
+    const int64_t deadline = wall_us() + static_cast<int64_t>(def_.join_timeout_s * 1e6);
+    int64_t next_request = 0;
+    while (!joined_ && exit_ == kPlaying) {
+      if (g_stop) {
+        exit_ = RobotExit::kInterrupted;
+        break;
+      }
+      const int64_t now = wall_us();
+      if (now >= deadline) {
+        log_ << name_ << ": no sim_world accepted the join within " << def_.join_timeout_s << " s\n" << std::flush;
+        exit_ = RobotExit::kNoWorld;
+        break;
+      }
+      if (now >= next_request) {
+        join_t msg;
+        msg.utime = now;
+        msg.team = static_cast<int8_t>(robot_.id().team);
+        msg.player = static_cast<int8_t>(robot_.id().player);
+        msg.instance = instance_;
+        msg.pid = static_cast<int32_t>(getpid());
+        lcm_.publish(kJoinChannel, &msg);
+        next_request = now + 250000;
+      }
+      lcm_.handleTimeout(50);
+    }
+    return joined_;
+  }
+
+  void on_join_reply(const ::lcm::ReceiveBuffer* buffer, const std::string& channel) {
+    join_reply_t msg;
+    if (!decode_or_report(buffer, channel, msg) || msg.instance != instance_) return;
+    if (msg.accepted) {
+      joined_ = true;
+    } else {
+      log_ << name_ << ": sim_world refused to let us play: " << msg.reason << "\n" << std::flush;
+      exit_ = RobotExit::kRejected;
+    }
+  }
+
+  void on_sense(const ::lcm::ReceiveBuffer* buffer, const std::string& channel) {
+    sense_t msg;
+    if (!decode_or_report(buffer, channel, msg)) return;
+    last_heard_us_ = wall_us();
+    SenseFrame frame;
+    try {
+      frame = from_lcm(msg);
+    } catch (const MalformedMessage& e) {
+      report_malformed(e.what());
+      return;
+    }
+    const RobotSense* mine = frame.find(robot_.id());
+    if (!joined_ || !mine || frame.frame <= last_frame_) return; // not ours yet, or a repeat
+    last_frame_ = frame.frame;
+    const RobotAct act = robot_.step(frame, *mine);
+    const act_t out = to_lcm(act, frame.utime, instance_);
+    lcm_.publish(act_channel_, &out);
+  }
+
+  void on_game(const ::lcm::ReceiveBuffer* buffer, const std::string& channel) {
+    game_state_t msg;
+    if (!decode_or_report(buffer, channel, msg)) return;
+    last_heard_us_ = wall_us();
+    if (msg.state == game_state_t::FINISHED && joined_) exit_ = RobotExit::kMatchOver;
+  }
+
+  template <typename Msg>
+  bool decode_or_report(const ::lcm::ReceiveBuffer* buffer, const std::string& channel, Msg& msg) {
+    try {
+      decode(buffer->data, static_cast<int>(buffer->data_size), channel, msg);
+      return true;
+    } catch (const MalformedMessage& e) {
+      report_malformed(e.what());
+      return false;
+    }
+  }
+
+  void report_malformed(const std::string& what) {
+    if (malformed_++ < 20) log_ << name_ << ": ignored malformed message: " << what << "\n" << std::flush;
+  }
+
+  robot::Robot& robot_;
+  const RobotNodeDef& def_;
+  std::ostream& log_;
+  ::lcm::LCM lcm_;
+  std::string act_channel_;
+  std::string name_;
+  int64_t instance_ = 0;
+  bool joined_ = false;
+  RobotExit exit_ = kPlaying;
+  int64_t last_frame_ = -1;
+  int64_t last_heard_us_ = 0;
+  int64_t malformed_ = 0;
+};
+
+} // namespace
+
+void request_robot_stop() { g_stop = true; }
+
+RobotExit run_robot(robot::Robot& robot, const RobotNodeDef& def, std::ostream& log) {
+  g_stop = false;
+  RobotNode node(robot, def, log);
+  return node.run();
+}
+
+} // namespace touchline::transport

@@ -1,1 +1,146 @@
-// stub
+#include "touchline/lcm/codec.hpp"
+
+#include <cmath>
+
+namespace touchline::transport {
+
+namespace {
+
+pose2d_t to_lcm(const Pose2D& p) {
+  pose2d_t m;
+  m.x_mm = p.x_mm;
+  m.y_mm = p.y_mm;
+  m.theta_rad = p.theta_rad;
+  return m;
+}
+
+void check_finite(float value, const char* field, const std::string& what) {
+  if (!std::isfinite(value)) throw MalformedMessage(what + ": " + field + " is not finite");
+}
+
+Pose2D from_lcm(const pose2d_t& m, const char* field, const std::string& what) {
+  check_finite(m.x_mm, field, what);
+  check_finite(m.y_mm, field, what);
+  check_finite(m.theta_rad, field, what);
+  return {m.x_mm, m.y_mm, m.theta_rad};
+}
+
+foot_motion_t to_lcm(const FootMotion& f) {
+  foot_motion_t m;
+  m.dx_mm = f.dx_mm;
+  m.dy_mm = f.dy_mm;
+  m.dtheta_rad = f.dtheta_rad;
+  return m;
+}
+
+FootMotion from_lcm(const foot_motion_t& m, const std::string& what) {
+  check_finite(m.dx_mm, "foot dx_mm", what);
+  check_finite(m.dy_mm, "foot dy_mm", what);
+  check_finite(m.dtheta_rad, "foot dtheta_rad", what);
+  return {m.dx_mm, m.dy_mm, m.dtheta_rad};
+}
+
+} // namespace
+
+std::string act_channel(RobotId id) {
+  return "TL_ACT_" + std::to_string(id.team) + "_" + std::to_string(id.player);
+}
+
+void check_id(int team, int player, const std::string& what) {
+  if (team < 0 || team > 1 || player < 1 || player > kMaxTeamSize)
+    throw MalformedMessage(what + ": no such robot (team " + std::to_string(team) + ", player " +
+                           std::to_string(player) + ")");
+}
+
+sense_t to_lcm(const SenseFrame& frame) {
+  sense_t m;
+  m.utime = frame.utime;
+  m.frame = frame.frame;
+  m.motion_ticks = static_cast<int8_t>(frame.motion_ticks);
+  m.game_state = static_cast<int8_t>(frame.game_state);
+  m.num_robots = static_cast<int16_t>(frame.robots.size());
+  for (const RobotSense& r : frame.robots) {
+    robot_sense_t s;
+    s.team = static_cast<int8_t>(r.id.team);
+    s.player = static_cast<int8_t>(r.id.player);
+    s.active = r.active;
+    s.truth = to_lcm(r.truth);
+    s.ball_x_mm = r.ball_x_mm;
+    s.ball_y_mm = r.ball_y_mm;
+    m.robots.push_back(s);
+  }
+  return m;
+}
+
+SenseFrame from_lcm(const sense_t& m) {
+  const std::string what = "sense_t frame " + std::to_string(m.frame);
+  if (m.motion_ticks < 1 || m.motion_ticks > kMaxTicksPerFrame)
+    throw MalformedMessage(what + ": motion_ticks " + std::to_string(m.motion_ticks) + " not in 1.." +
+                           std::to_string(kMaxTicksPerFrame));
+  if (m.game_state < 0 || m.game_state > static_cast<int8_t>(GameState::kFinished))
+    throw MalformedMessage(what + ": unknown game_state " + std::to_string(m.game_state));
+  SenseFrame frame;
+  frame.utime = m.utime;
+  frame.frame = m.frame;
+  frame.motion_ticks = m.motion_ticks;
+  frame.game_state = static_cast<GameState>(m.game_state);
+  for (const robot_sense_t& s : m.robots) {
+    check_id(s.team, s.player, what);
+    RobotSense r;
+    r.id = {s.team, s.player};
+    r.active = s.active;
+    r.truth = from_lcm(s.truth, "truth", what);
+    check_finite(s.ball_x_mm, "ball_x_mm", what);
+    check_finite(s.ball_y_mm, "ball_y_mm", what);
+    r.ball_x_mm = s.ball_x_mm;
+    r.ball_y_mm = s.ball_y_mm;
+    frame.robots.push_back(r);
+  }
+  return frame;
+}
+
+act_t to_lcm(const RobotAct& act, int64_t utime, int64_t instance) {
+  act_t m;
+  m.utime = utime;
+  m.frame = act.frame;
+  m.team = static_cast<int8_t>(act.id.team);
+  m.player = static_cast<int8_t>(act.id.player);
+  m.instance = instance;
+  m.motion_ticks = static_cast<int8_t>(act.motion_ticks);
+  for (int i = 0; i < act.motion_ticks; ++i) {
+    m.left.push_back(to_lcm(act.left[static_cast<size_t>(i)]));
+    m.right.push_back(to_lcm(act.right[static_cast<size_t>(i)]));
+  }
+  m.head_yaw_rad = act.head_yaw_rad;
+  m.head_pitch_rad = act.head_pitch_rad;
+  m.action_type = static_cast<int8_t>(act.action_type);
+  m.leds = act.leds;
+  m.odometry = to_lcm(act.odometry);
+  return m;
+}
+
+RobotAct from_lcm(const act_t& m) {
+  const std::string what = "act_t frame " + std::to_string(m.frame);
+  check_id(m.team, m.player, what);
+  if (m.motion_ticks < 0 || m.motion_ticks > kMaxTicksPerFrame)
+    throw MalformedMessage(what + ": motion_ticks " + std::to_string(m.motion_ticks) + " not in 0.." +
+                           std::to_string(kMaxTicksPerFrame));
+  RobotAct act;
+  act.id = {m.team, m.player};
+  act.frame = m.frame;
+  act.motion_ticks = m.motion_ticks;
+  for (size_t i = 0; i < static_cast<size_t>(m.motion_ticks); ++i) {
+    act.left[i] = from_lcm(m.left[i], what);
+    act.right[i] = from_lcm(m.right[i], what);
+  }
+  check_finite(m.head_yaw_rad, "head_yaw_rad", what);
+  check_finite(m.head_pitch_rad, "head_pitch_rad", what);
+  act.head_yaw_rad = m.head_yaw_rad;
+  act.head_pitch_rad = m.head_pitch_rad;
+  act.action_type = m.action_type;
+  act.leds = m.leds;
+  act.odometry = from_lcm(m.odometry, "odometry", what);
+  return act;
+}
+
+} // namespace touchline::transport

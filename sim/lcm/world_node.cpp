@@ -1,1 +1,291 @@
-// stub
+#include "touchline/lcm/world_node.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <ostream>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#include <lcm/lcm-cpp.hpp>
+
+#include "touchline/game_state_t.hpp"
+#include "touchline/join_reply_t.hpp"
+#include "touchline/join_t.hpp"
+#include "touchline/robot_status_t.hpp"
+#include "touchline/sim/lockstep.hpp"
+#include "touchline/world_truth_t.hpp"
+
+namespace touchline::transport {
+
+namespace {
+
+std::atomic<bool> g_stop{false};
+
+int64_t wall_us() {
+  using namespace std::chrono;
+  return duration_cast<microseconds>(steady_clock::now().time_since_epoch()).count();
+}
+
+pose2d_t to_msg(const Pose2D& p) {
+  pose2d_t m;
+  m.x_mm = p.x_mm;
+  m.y_mm = p.y_mm;
+  m.theta_rad = p.theta_rad;
+  return m;
+}
+
+world_truth_t to_msg(const sim::TruthFrame& truth) {
+  world_truth_t m;
+  m.utime = truth.utime;
+  m.frame = truth.frame;
+  m.ball_x_mm = truth.ball.x_mm;
+  m.ball_y_mm = truth.ball.y_mm;
+  m.ball_vx_mm_s = truth.ball.vx_mm_s;
+  m.ball_vy_mm_s = truth.ball.vy_mm_s;
+  m.num_robots = static_cast<int16_t>(truth.robots.size());
+  for (const auto& r : truth.robots) {
+    robot_truth_t t;
+    t.team = static_cast<int8_t>(r.truth.id.team);
+    t.player = static_cast<int8_t>(r.truth.id.player);
+    t.active = r.active;
+    t.body = to_msg(r.truth.body);
+    t.left_foot = to_msg(r.truth.left_foot);
+    t.right_foot = to_msg(r.truth.right_foot);
+    t.head_yaw_rad = r.head_yaw_rad;
+    t.head_pitch_rad = r.head_pitch_rad;
+    m.robots.push_back(t);
+  }
+  return m;
+}
+
+/// FNV-1a 64, folded over a byte stream.
+struct Fnv1a {
+  uint64_t value = 1469598103934665603ull;
+  void add(const uint8_t* data, size_t size) {
+    for (size_t i = 0; i < size; ++i) value = (value ^ data[i]) * 1099511628211ull;
+  }
+};
+
+/// Publishes with a pre-sized buffer, returning the encoded bytes (for the truth hash).
+template <typename Msg>
+std::vector<uint8_t> publish(::lcm::LCM& lcm, const char* channel, const Msg& msg) {
+  std::vector<uint8_t> buffer(static_cast<size_t>(msg.getEncodedSize()));
+  msg.encode(buffer.data(), 0, static_cast<int>(buffer.size()));
+  lcm.publish(channel, buffer.data(), static_cast<unsigned>(buffer.size()));
+  return buffer;
+}
+
+class WorldNode {
+ public:
+  WorldNode(sim::Match& match, const WorldNodeDef& def, std::ostream& log)
+      : match_(match), def_(def), log_(log), lcm_(def.lcm_url) {
+    if (!lcm_.good())
+      throw std::runtime_error("cannot open LCM at " + def.lcm_url +
+                               " (is a multicast route on lo? see README, Networking)");
+    lcm_.subscribe(kJoinChannel, &WorldNode::on_join, this);
+    lcm_.subscribe(kActChannelPattern, &WorldNode::on_act, this);
+  }
+
+  RunSummary run() {
+    wait_for_joins();
+    match_.start();
+    log_ << "sim_world: kick-off with " << match_.active_robots().size() << " robots\n" << std::flush;
+    const int64_t start_us = wall_us();
+    while (!match_.finished() && !g_stop) {
+      run_frame(start_us);
+    }
+    summary_.interrupted = g_stop;
+    summary_.frames = match_.frame();
+    summary_.sim_s = static_cast<double>(match_.utime()) * 1e-6;
+    summary_.wall_s = static_cast<double>(wall_us() - start_us) * 1e-6;
+    publish_game_state(GameState::kFinished);
+    publish_status_all("match over");
+    return summary_;
+  }
+
+ private:
+  void wait_for_joins() {
+    const int64_t deadline = wall_us() + static_cast<int64_t>(def_.join_timeout_s * 1e6);
+    while (static_cast<int>(match_.roster().members().size()) < def_.robots) {
+      if (g_stop) throw std::runtime_error("interrupted while waiting for robots to join");
+      if (wall_us() >= deadline)
+        throw std::runtime_error("only " + std::to_string(match_.roster().members().size()) + " of " +
+                                 std::to_string(def_.robots) + " robots joined within " +
+                                 std::to_string(static_cast<int>(def_.join_timeout_s)) + " s");
+      lcm_.handleTimeout(50);
+    }
+  }
+
+  void run_frame(int64_t start_us) {
+    publish(lcm_, kSenseChannel, to_lcm(match_.sense()));
+    if (def_.pacing != Pacing::kFree) wait_for_answers();
+    if (def_.pacing != Pacing::kLockstep) pace(start_us);
+    match_.advance();
+    const auto bytes = publish(lcm_, kTruthChannel, to_msg(match_.truth()));
+    truth_hash_.add(bytes.data(), bytes.size());
+    summary_.truth_hash = truth_hash_.value;
+    if (match_.frame() % kFramesPerSecond == 0) {
+      publish_game_state(GameState::kPlaying);
+      publish_status_all("");
+    }
+    if (def_.progress && match_.frame() % (10 * kFramesPerSecond) == 0) {
+      const double sim_s = static_cast<double>(match_.utime()) * 1e-6;
+      const double wall_s = static_cast<double>(wall_us() - start_us) * 1e-6;
+      log_ << "sim_world: " << std::fixed << std::setprecision(0) << sim_s << " s simulated, x"
+           << std::setprecision(1) << sim_s / std::max(wall_s, 1e-9) << " real time\n" << std::flush;
+    }
+  }
+
+  void wait_for_answers() {
+    barrier_.begin(match_.frame(), match_.active_robots(), wall_us(), def_.robot_timeout_ms * 1000);
+    for (int64_t now = wall_us(); !barrier_.complete(now); now = wall_us()) {
+      const int64_t wait_ms = (barrier_.remaining_us(now) + 999) / 1000;
+      lcm_.handleTimeout(static_cast<int>(std::max<int64_t>(1, wait_ms)));
+    }
+    for (RobotId id : barrier_.missing()) {
+      match_.time_out(id);
+      report(id, robot_status_t::TIMED_OUT,
+             "no answer within " + std::to_string(def_.robot_timeout_ms) + " ms at frame " +
+                 std::to_string(match_.frame()) + "; it stands still and the match goes on");
+    }
+  }
+
+  /// Holds the frame until the wall clock catches up with `speed` x simulated time,
+  /// handling messages meanwhile (free mode applies answers as they come).
+  void pace(int64_t start_us) {
+    const double frame_end_sim_us = static_cast<double>(frame_start_utime(match_.frame() + 1));
+    const int64_t due = start_us + static_cast<int64_t>(frame_end_sim_us / def_.speed);
+    for (int64_t now = wall_us(); now < due && !g_stop; now = wall_us())
+      lcm_.handleTimeout(static_cast<int>(std::max<int64_t>(1, (due - now) / 1000)));
+  }
+
+  void on_join(const ::lcm::ReceiveBuffer* buffer, const std::string& channel) {
+    join_t msg;
+    try {
+      decode(buffer->data, static_cast<int>(buffer->data_size), channel, msg);
+    } catch (const MalformedMessage& e) {
+      malformed(e.what());
+      return;
+    }
+    const RobotId id{msg.team, msg.player};
+    const sim::JoinReply reply = match_.join(id, msg.instance, msg.pid);
+    join_reply_t out;
+    out.utime = match_.utime();
+    out.team = msg.team;
+    out.player = msg.player;
+    out.instance = msg.instance;
+    out.accepted = reply.accepted;
+    out.reason = reply.reason;
+    publish(lcm_, kJoinReplyChannel, out);
+    if (!reply.accepted) {
+      if (rejected_.insert(msg.instance).second)
+        log_ << "sim_world: refused a robot_shim (pid " << msg.pid << "): " << reply.reason << "\n" << std::flush;
+    } else if (joined_.insert(msg.instance).second) {
+      report(id, robot_status_t::JOINED, "joined (pid " + std::to_string(msg.pid) + ")");
+    }
+  }
+
+  void on_act(const ::lcm::ReceiveBuffer* buffer, const std::string& channel) {
+    act_t msg;
+    RobotAct act;
+    try {
+      decode(buffer->data, static_cast<int>(buffer->data_size), channel, msg);
+      act = from_lcm(msg);
+      if (channel != act_channel(act.id))
+        throw MalformedMessage(channel + ": carries an act of " + sim::describe(act.id));
+    } catch (const MalformedMessage& e) {
+      malformed(e.what());
+      return;
+    }
+    switch (match_.apply(act, msg.instance, def_.pacing == Pacing::kFree)) {
+      case sim::ActOutcome::kRejoined:
+        report(act.id, robot_status_t::REJOINED, "answered again at frame " + std::to_string(act.frame));
+        [[fallthrough]];
+      case sim::ActOutcome::kApplied:
+        barrier_.answer(act.id, act.frame);
+        break;
+      case sim::ActOutcome::kStale:
+        ++summary_.stale;
+        break;
+      case sim::ActOutcome::kUnknown:
+        if (unknown_.insert(msg.instance).second)
+          log_ << "sim_world: ignoring answers from a " << sim::describe(act.id)
+               << " that has not joined (instance " << msg.instance << ")\n" << std::flush;
+        break;
+    }
+  }
+
+  void malformed(const std::string& what) {
+    if (summary_.malformed++ < kMaxMalformedReports) log_ << "sim_world: ignored malformed message: " << what << "\n" << std::flush;
+  }
+
+  void report(RobotId id, int8_t state, const std::string& detail) {
+    log_ << "sim_world: " << sim::describe(id) << " " << detail << "\n" << std::flush;
+    publish_status(id, state, detail);
+  }
+
+  void publish_status(RobotId id, int8_t state, const std::string& detail) {
+    const sim::Member* member = match_.roster().find(id);
+    robot_status_t msg;
+    msg.utime = match_.utime();
+    msg.team = static_cast<int8_t>(id.team);
+    msg.player = static_cast<int8_t>(id.player);
+    msg.state = state;
+    msg.frames_answered = member ? member->frames_answered : 0;
+    msg.frames_missed = member ? member->frames_missed : 0;
+    msg.detail = detail;
+    publish(lcm_, kStatusChannel, msg);
+  }
+
+  void publish_status_all(const std::string& detail) {
+    for (const auto& [id, member] : match_.roster().members())
+      publish_status(id, member.active ? robot_status_t::ACTIVE : robot_status_t::TIMED_OUT, detail);
+  }
+
+  void publish_game_state(GameState state) {
+    game_state_t msg;
+    msg.utime = match_.utime();
+    msg.state = static_cast<int8_t>(state);
+    const double left_s = match_.config().match.duration_s - static_cast<double>(match_.utime()) * 1e-6;
+    msg.secs_remaining = static_cast<int32_t>(std::max(0.0, std::ceil(left_s)));
+    msg.first_half = 1;
+    msg.kickoff_team = 0;
+    msg.score[0] = msg.score[1] = 0;
+    publish(lcm_, kGameChannel, msg);
+  }
+
+  static constexpr int kFramesPerSecond = 30;
+  static constexpr int64_t kMaxMalformedReports = 20;
+
+  sim::Match& match_;
+  const WorldNodeDef& def_;
+  std::ostream& log_;
+  ::lcm::LCM lcm_;
+  sim::FrameBarrier barrier_;
+  Fnv1a truth_hash_;
+  RunSummary summary_;
+  std::set<int64_t> joined_, rejected_, unknown_;
+};
+
+} // namespace
+
+void request_stop() { g_stop = true; }
+
+RunSummary run_world(sim::Match& match, const WorldNodeDef& def, std::ostream& log) {
+  g_stop = false;
+  WorldNode node(match, def, log);
+  return node.run();
+}
+
+std::string hex_hash(uint64_t value) {
+  std::ostringstream out;
+  out << std::hex << std::setw(16) << std::setfill('0') << value;
+  return out.str();
+}
+
+} // namespace touchline::transport

@@ -1,0 +1,78 @@
+#pragma once
+// The Blackboard: sub-blackboards that modules share. Only adapters write it; behaviour
+// code receives it as const. Units: mm, rad; times in simulated microseconds.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "touchline/robot_api/action_command.hpp"
+#include "touchline/robot_api/geometry.hpp"
+
+namespace touchline::api {
+
+/// Written by the MotionAdapter (every 10 ms motion tick).
+struct MotionBlackboard {
+  AbsCoord odometry;                 ///< dead-reckoned body pose since the robot started
+  ActionCommand::Body active;        ///< the body command being executed
+  float headYaw = 0, headPitch = 0;  ///< rad, measured
+  bool standing = true;              ///< the walk is not stepping
+  int64_t ticks = 0;                 ///< motion ticks run
+};
+
+/// Written by the localisation adapter (every perception frame).
+struct LocalisationBlackboard {
+  AbsCoord robotPos;        ///< where the robot believes it is (field frame)
+  AbsCoord ballPos;         ///< absolute ball estimate, theta unused
+  RRCoord ballPosRR;        ///< ball relative to the robot
+  int ballLostCount = 0;    ///< frames since the ball was last seen
+  AbsCoord teamBallPos;     ///< the team's shared ball estimate
+};
+
+/// Written by the vision adapter (every perception frame): what the camera saw.
+struct VisionBlackboard {
+  bool ballSeen = false;
+  RRCoord ball;
+  int64_t frame = 0;        ///< camera frame index
+};
+
+enum class GameState : int8_t { INITIAL = 0, READY = 1, SET = 2, PLAYING = 3, FINISHED = 4 };
+
+/// Written by the game-controller adapter.
+struct GameControllerBlackboard {
+  GameState state = GameState::INITIAL;
+  int team = 0;             ///< our team index, 0 or 1
+  int playerNumber = 1;     ///< 1..7
+  bool penalised = false;
+  std::array<int, 2> score{{0, 0}};
+  int secsRemaining = 0;
+};
+
+/// A teammate's last message, written by the receiver adapter.
+struct TeamMessage {
+  int playerNumber = 0;
+  int64_t utime = 0;
+  std::vector<uint8_t> data;
+};
+
+struct ReceiverBlackboard {
+  std::vector<TeamMessage> messages;
+};
+
+/// Written by the behaviour adapter: the request the behaviour returned this frame.
+struct BehaviourBlackboard {
+  ActionCommand::All request;
+  std::string skill;       ///< name of the running behaviour
+};
+
+struct Blackboard {
+  int64_t utime = 0;       ///< simulated time of this perception frame, microseconds
+  MotionBlackboard motion;
+  LocalisationBlackboard localisation;
+  VisionBlackboard vision;
+  GameControllerBlackboard gameController;
+  ReceiverBlackboard receiver;
+  BehaviourBlackboard behaviour;
+};
+
+} // namespace touchline::api

@@ -1,0 +1,32 @@
+#pragma once
+// The adapters that write the Blackboard from what the robot senses, one per
+// sub-blackboard, each saying what it reads and what it writes. Behaviour never writes.
+#include <cstdint>
+
+#include "touchline/frame.hpp"
+#include "touchline/robot_api/behaviour.hpp"
+#include "touchline/robot_api/blackboard.hpp"
+
+namespace touchline::robot {
+
+/// Reads: the frame's game state. Writes: blackboard.gameController, blackboard.utime.
+void write_game_controller(const SenseFrame& frame, RobotId id, api::Blackboard& blackboard);
+
+/// Perfect localisation until the filter lands: reads the sensed truth pose and ball.
+/// Writes: blackboard.localisation, blackboard.vision.
+void write_perception(const SenseFrame& frame, const RobotSense& sense, api::Blackboard& blackboard);
+
+/// Runs the behaviour once and measures its CPU time on this thread.
+/// Reads: the whole Blackboard (const). Writes: blackboard.behaviour.
+class BehaviourAdapter {
+ public:
+  explicit BehaviourAdapter(api::Behaviour& behaviour) : behaviour_(behaviour) {}
+  void tick(api::Blackboard& blackboard);
+  int64_t last_cpu_us() const { return last_cpu_us_; }
+
+ private:
+  api::Behaviour& behaviour_;
+  int64_t last_cpu_us_ = 0;
+};
+
+} // namespace touchline::robot

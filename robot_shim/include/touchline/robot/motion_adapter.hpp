@@ -1,0 +1,45 @@
+#pragma once
+// MotionAdapter: the 100 Hz motion thread of the robot. Each tick it reads the behaviour's
+// request from the Blackboard, runs the generator chain (head, then walk for STAND and
+// WALK; other actions stand until their generators land) and hands the feet to the
+// effector. Reads: blackboard.behaviour.request. Writes: blackboard.motion, the effector.
+#include "touchline/frame.hpp"
+#include "touchline/robot/walk_cycle.hpp"
+#include "touchline/robot_api/blackboard.hpp"
+
+namespace touchline::robot {
+
+/// Head joint limits (Nao) and speed.
+struct HeadDef {
+  float max_yaw_rad = 2.08f;       ///< either side
+  float min_pitch_rad = -0.67f;    ///< up
+  float max_pitch_rad = 0.51f;     ///< down
+  float max_speed_rad_s = 4.0f;    ///< at yawSpeed/pitchSpeed = 1
+};
+
+/// What the effector sends to the world for one motion tick.
+struct EffectorTick {
+  FootMotion left, right;
+};
+
+class MotionAdapter {
+ public:
+  MotionAdapter(const WalkDef& walk, const HeadDef& head = {});
+
+  /// One 10 ms motion tick.
+  EffectorTick tick(api::Blackboard& blackboard);
+
+  const WalkCycle& walk() const { return walk_; }
+  float head_yaw() const { return yaw_; }
+  float head_pitch() const { return pitch_; }
+
+ private:
+  void tick_head(const api::ActionCommand::Head& request);
+  WalkRequest walk_request(const api::ActionCommand::Body& body) const;
+
+  WalkCycle walk_;
+  HeadDef head_;
+  float yaw_ = 0, pitch_ = 0;
+};
+
+} // namespace touchline::robot

@@ -1,0 +1,34 @@
+#pragma once
+// robot_shim's LCM adapter: joins the match as one robot, then answers every sense_t
+// frame with the act_t that the Robot computes. The robot code sees simulated time only.
+#include <cstdint>
+#include <iosfwd>
+#include <string>
+
+#include "touchline/lcm/codec.hpp"
+#include "touchline/robot/robot.hpp"
+
+namespace touchline::transport {
+
+struct RobotNodeDef {
+  std::string lcm_url = kDefaultUrl;
+  double join_timeout_s = 60;  ///< wall seconds to wait for sim_world to accept the join
+  double world_timeout_s = 30; ///< wall seconds of silence from sim_world before giving up
+  int64_t instance = 0;        ///< random id of this process (0: pick one)
+};
+
+/// Why run_robot returned.
+enum class RobotExit {
+  kMatchOver,   ///< the world said FINISHED
+  kRejected,    ///< the world refused the join (reason in the log)
+  kNoWorld,     ///< no sim_world answered, or it fell silent
+  kInterrupted, ///< SIGINT/SIGTERM
+};
+
+/// Joins and plays until the match is over. Messages for the user go to `log`.
+RobotExit run_robot(robot::Robot& robot, const RobotNodeDef& def, std::ostream& log);
+
+/// Asks a running run_robot to return (signal-safe).
+void request_robot_stop();
+
+} // namespace touchline::transport

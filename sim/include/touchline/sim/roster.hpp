@@ -1,0 +1,46 @@
+#pragma once
+// Which shim plays which robot. A join claims (team, player) with a random instance id;
+// the first claimant wins, a second is refused while the first is active, and a robot
+// that timed out may be taken over by a new instance (a restarted shim).
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "touchline/frame.hpp"
+
+namespace touchline::sim {
+
+struct JoinReply {
+  bool accepted = false;
+  std::string reason; ///< one line, empty when accepted
+};
+
+struct Member {
+  int64_t instance = 0;
+  int pid = 0;
+  bool active = true;        ///< answering frames; false after a timeout
+  int64_t frames_answered = 0;
+  int64_t frames_missed = 0;
+};
+
+class Roster {
+ public:
+  explicit Roster(int team_size) : team_size_(team_size) {}
+
+  JoinReply join(RobotId id, int64_t instance, int pid);
+  /// The member playing `id`, if any.
+  Member* find(RobotId id);
+  const Member* find(RobotId id) const;
+  const std::map<RobotId, Member>& members() const { return members_; }
+  int team_size() const { return team_size_; }
+
+ private:
+  int team_size_;
+  std::map<RobotId, Member> members_;
+};
+
+/// "team 0 player 2": how robots are named in messages to the user.
+std::string describe(RobotId id);
+
+} // namespace touchline::sim

@@ -1,0 +1,53 @@
+#pragma once
+// sim_world's LCM adapter: runs a Match over LCM. It publishes each frame's sense_t,
+// gathers the robots' act_t answers (lockstep: waits for every active robot up to a
+// timeout; free: never waits, late answers apply late), steps the world and publishes
+// world truth, game state and robot status.
+#include <cstdint>
+#include <iosfwd>
+#include <string>
+
+#include "touchline/lcm/codec.hpp"
+#include "touchline/sim/match.hpp"
+
+namespace touchline::transport {
+
+enum class Pacing {
+  kLockstep, ///< wait for every active robot, as fast as they allow (default)
+  kRealtime, ///< lockstep, paced to the wall clock at `speed` times real time
+  kFree,     ///< never wait; paced at `speed`; late answers apply late
+};
+
+struct WorldNodeDef {
+  std::string lcm_url = kDefaultUrl;
+  Pacing pacing = Pacing::kLockstep;
+  double speed = 1.0;            ///< real-time multiple for kRealtime and kFree
+  int64_t robot_timeout_ms = 1000; ///< wall time a robot may take to answer a frame
+  int robots = 8;                ///< joins to wait for before kick-off
+  double join_timeout_s = 30;    ///< wall time to wait for them
+  std::string summary_path;      ///< write a JSON summary here at the end (empty: none)
+  bool progress = true;          ///< print a line per simulated 10 s
+};
+
+/// What a run did, for the summary and the tests.
+struct RunSummary {
+  int64_t frames = 0;
+  double sim_s = 0;
+  double wall_s = 0;
+  uint64_t truth_hash = 0;  ///< FNV-1a over every published world_truth_t, in order
+  int64_t malformed = 0;    ///< messages that failed to decode or validate
+  int64_t stale = 0;        ///< answers that came too late (lockstep) and were dropped
+  bool interrupted = false; ///< stopped by SIGINT/SIGTERM
+};
+
+/// Runs the match to its end. Messages for the user go to `log`, one line each.
+/// Throws std::runtime_error when the robots do not join in time or LCM fails.
+RunSummary run_world(sim::Match& match, const WorldNodeDef& def, std::ostream& log);
+
+/// 16 lowercase hex digits.
+std::string hex_hash(uint64_t value);
+
+/// Asks a running run_world to stop after the current frame (signal-safe).
+void request_stop();
+
+} // namespace touchline::transport
