@@ -1,0 +1,34 @@
+#pragma once
+// The in-process mode: the world and the robots linked into one process, no transport.
+// Same Match, same Robot, same frames as sim_world + robot_shim over LCM, so a run here
+// is the lockstep run without the round trips (tests, learning, quick experiments).
+#include <memory>
+#include <vector>
+
+#include "touchline/robot/robot.hpp"
+#include "touchline/sim/match.hpp"
+
+namespace touchline::inprocess {
+
+class InProcessMatch {
+ public:
+  explicit InProcessMatch(const sim::WorldConfig& config) : match_(config) {}
+
+  /// Adds a robot before start(). Throws std::invalid_argument if the roster refuses it.
+  robot::Robot& add_robot(RobotId id, const robot::WalkDef& walk, std::unique_ptr<api::Behaviour> behaviour);
+  void start() { match_.start(); }
+  /// One camera frame: every robot senses, answers, and the world steps.
+  void step_frame();
+  /// Frames until the match's duration is over.
+  void run_to_end();
+
+  sim::Match& match() { return match_; }
+  const sim::Match& match() const { return match_; }
+  robot::Robot& robot(RobotId id);
+
+ private:
+  sim::Match match_;
+  std::vector<std::unique_ptr<robot::Robot>> robots_;
+};
+
+} // namespace touchline::inprocess

@@ -1,0 +1,40 @@
+#include "touchline/inprocess/inprocess_match.hpp"
+
+#include <stdexcept>
+
+namespace touchline::inprocess {
+
+namespace {
+constexpr int64_t kInstance = 1; // one process: every robot is its own only claimant
+}
+
+robot::Robot& InProcessMatch::add_robot(RobotId id, const robot::WalkDef& walk,
+                                        std::unique_ptr<api::Behaviour> behaviour) {
+  const sim::JoinReply reply = match_.join(id, kInstance + static_cast<int64_t>(robots_.size()), 0);
+  if (!reply.accepted) throw std::invalid_argument(reply.reason);
+  robots_.push_back(std::make_unique<robot::Robot>(id, walk, std::move(behaviour)));
+  return *robots_.back();
+}
+
+void InProcessMatch::step_frame() {
+  const SenseFrame frame = match_.sense();
+  for (size_t i = 0; i < robots_.size(); ++i) {
+    robot::Robot& robot = *robots_[i];
+    const RobotSense* sense = frame.find(robot.id());
+    if (!sense) continue;
+    match_.apply(robot.step(frame, *sense), kInstance + static_cast<int64_t>(i));
+  }
+  match_.advance();
+}
+
+void InProcessMatch::run_to_end() {
+  while (!match_.finished()) step_frame();
+}
+
+robot::Robot& InProcessMatch::robot(RobotId id) {
+  for (auto& robot : robots_)
+    if (robot->id() == id) return *robot;
+  throw std::out_of_range("no robot " + std::to_string(id.team) + "/" + std::to_string(id.player));
+}
+
+} // namespace touchline::inprocess

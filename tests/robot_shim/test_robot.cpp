@@ -1,0 +1,82 @@
+#include "touchline/robot/robot.hpp"
+
+#include <gtest/gtest.h>
+
+using namespace touchline;
+using namespace touchline::api;
+
+namespace {
+
+/// Records what it saw and asks for a fixed walk.
+class Probe : public Behaviour {
+ public:
+  ActionCommand::All tick(const Blackboard& blackboard) override {
+    seen_utime = blackboard.utime;
+    seen_pos = blackboard.localisation.robotPos;
+    seen_ball = blackboard.localisation.ballPosRR;
+    seen_player = blackboard.gameController.playerNumber;
+    ++ticks;
+    ActionCommand::All all;
+    all.body = ActionCommand::walk(100, 0, 0);
+    all.leds.chest = 0xff0000;
+    return all;
+  }
+  int64_t seen_utime = -1;
+  AbsCoord seen_pos;
+  RRCoord seen_ball;
+  int seen_player = 0;
+  int ticks = 0;
+};
+
+SenseFrame frame_with(RobotSense sense, int64_t frame_index) {
+  SenseFrame frame;
+  frame.frame = frame_index;
+  frame.utime = frame_start_utime(frame_index);
+  frame.motion_ticks = ticks_in_frame(frame_index);
+  frame.robots.push_back(sense);
+  return frame;
+}
+
+} // namespace
+
+TEST(Robot, OneFrameRunsTheBehaviourOnceAndTheFramesMotionTicks) {
+  auto probe_owner = std::make_unique<Probe>();
+  Probe& probe = *probe_owner;
+  robot::Robot robot({0, 3}, robot::WalkDef{}, std::move(probe_owner));
+  RobotSense sense;
+  sense.id = {0, 3};
+  sense.truth = {1000, 0, kPi / 2};
+  sense.ball_x_mm = 1000;
+  sense.ball_y_mm = 500; // straight ahead of a robot facing +y
+  const SenseFrame frame = frame_with(sense, 2);
+  const RobotAct act = robot.step(frame, frame.robots[0]);
+
+  EXPECT_EQ(probe.ticks, 1);
+  EXPECT_EQ(probe.seen_utime, frame_start_utime(2));
+  EXPECT_EQ(probe.seen_player, 3);
+  EXPECT_FLOAT_EQ(probe.seen_pos.x, 1000);
+  EXPECT_NEAR(probe.seen_ball.distance, 500, 1e-3);
+  EXPECT_NEAR(probe.seen_ball.heading, 0, 1e-6);
+
+  EXPECT_EQ(act.id, (RobotId{0, 3}));
+  EXPECT_EQ(act.frame, 2);
+  EXPECT_EQ(act.motion_ticks, 4); // frame 2 holds ticks 6..9
+  EXPECT_EQ(act.leds, 0xff0000);
+  EXPECT_EQ(robot.blackboard().motion.ticks, 4);
+  EXPECT_EQ(act.action_type, static_cast<int>(ActionCommand::ActionType::WALK));
+}
+
+TEST(Robot, WalkingRobotReportsFootMotionAndOdometry) {
+  robot::Robot robot({1, 1}, robot::WalkDef{}, std::make_unique<Probe>());
+  RobotSense sense;
+  sense.id = {1, 1};
+  float moved = 0;
+  for (int64_t f = 0; f < 90; ++f) { // 3 s
+    const SenseFrame frame = frame_with(sense, f);
+    const RobotAct act = robot.step(frame, frame.robots[0]);
+    for (int i = 0; i < act.motion_ticks; ++i) moved += (act.left[i].dx_mm + act.right[i].dx_mm) / 2;
+  }
+  EXPECT_GT(robot.blackboard().motion.odometry.x, 200.f);
+  EXPECT_NEAR(moved, robot.blackboard().motion.odometry.x, 0.05f * robot.blackboard().motion.odometry.x);
+  EXPECT_GE(robot.behaviour_cpu_us(), 0);
+}

@@ -1,0 +1,129 @@
+#include "touchline/sim/match.hpp"
+
+#include <gtest/gtest.h>
+
+using namespace touchline;
+using sim::ActOutcome;
+
+namespace {
+
+sim::WorldConfig small_config() {
+  sim::WorldConfig config;
+  config.match.team_size = 2;
+  config.match.duration_s = 1;
+  return config;
+}
+
+RobotAct forward_act(RobotId id, int64_t frame, int ticks, float dx_mm) {
+  RobotAct act;
+  act.id = id;
+  act.frame = frame;
+  act.motion_ticks = ticks;
+  for (int i = 0; i < ticks; ++i) act.left[i] = act.right[i] = {dx_mm, 0, 0};
+  return act;
+}
+
+} // namespace
+
+TEST(Match, FramesFollowTheThreeThreeFourTickPattern) {
+  sim::Match match(small_config());
+  match.start();
+  std::vector<int> ticks;
+  for (int i = 0; i < 6; ++i) {
+    ticks.push_back(match.sense().motion_ticks);
+    match.advance();
+  }
+  EXPECT_EQ(ticks, (std::vector<int>{3, 3, 4, 3, 3, 4}));
+  EXPECT_EQ(match.utime(), 200000); // 6 frames = 20 ticks of 10 ms
+  EXPECT_EQ(match.world().ticks(), 20);
+}
+
+TEST(Match, RobotsArePlacedInIdOrderWhateverTheJoinOrder) {
+  sim::Match a(small_config()), b(small_config());
+  a.join({1, 2}, 1, 0);
+  a.join({0, 1}, 2, 0);
+  b.join({0, 1}, 3, 0);
+  b.join({1, 2}, 4, 0);
+  a.start();
+  b.start();
+  EXPECT_EQ(a.world().state_hash(), b.world().state_hash());
+  ASSERT_EQ(a.sense().robots.size(), 2u);
+  EXPECT_EQ(a.sense().robots[0].id, (RobotId{0, 1}));
+}
+
+TEST(Match, AnActMovesTheRobotByItsFootMotions) {
+  sim::Match match(small_config());
+  match.join({0, 1}, 9, 0);
+  match.start();
+  const Pose2D start = match.sense().robots[0].truth;
+  const int ticks = match.sense().motion_ticks;
+  EXPECT_EQ(match.apply(forward_act({0, 1}, 0, ticks, 5.f), 9), ActOutcome::kApplied);
+  match.advance();
+  const Pose2D end = match.truth().robots[0].truth.body;
+  // Forward in the body frame: the robot faces theta.
+  const float moved = std::hypot(end.x_mm - start.x_mm, end.y_mm - start.y_mm);
+  EXPECT_NEAR(moved, 5.f * static_cast<float>(ticks), 0.05f);
+}
+
+TEST(Match, StaleAndUnknownActsAreIgnored) {
+  sim::Match match(small_config());
+  match.join({0, 1}, 9, 0);
+  match.start();
+  match.advance();
+  EXPECT_EQ(match.apply(forward_act({0, 1}, 0, 3, 5.f), 9), ActOutcome::kStale);
+  EXPECT_EQ(match.apply(forward_act({0, 1}, 1, 3, 5.f), 8), ActOutcome::kUnknown); // wrong instance
+  EXPECT_EQ(match.apply(forward_act({0, 2}, 1, 3, 5.f), 9), ActOutcome::kUnknown); // never joined
+  EXPECT_EQ(match.apply(forward_act({0, 1}, 5, 3, 5.f), 9), ActOutcome::kStale);   // from the future
+}
+
+TEST(Match, FreeRunningAppliesLateAnswersLate) {
+  sim::Match match(small_config());
+  match.join({0, 1}, 9, 0);
+  match.start();
+  match.advance(); // frame 0 passes with no answer: the robot stands
+  const Pose2D before = match.truth().robots[0].truth.body;
+  EXPECT_EQ(match.apply(forward_act({0, 1}, 0, 3, 5.f), 9, /*accept_late=*/true), ActOutcome::kApplied);
+  match.advance();
+  const Pose2D after = match.truth().robots[0].truth.body;
+  EXPECT_NEAR(std::hypot(after.x_mm - before.x_mm, after.y_mm - before.y_mm), 15.f, 0.05f);
+}
+
+TEST(Match, TimedOutRobotStandsIsInactiveAndRejoinsWhenItAnswers) {
+  sim::Match match(small_config());
+  match.join({0, 1}, 9, 0);
+  match.join({0, 2}, 10, 0);
+  match.start();
+  match.apply(forward_act({0, 1}, 0, 3, 5.f), 9);
+  match.time_out({0, 1}); // queued motion is dropped
+  EXPECT_EQ(match.active_robots(), (std::vector<RobotId>{{0, 2}}));
+  const Pose2D before = match.sense().robots[0].truth;
+  match.advance();
+  const Pose2D after = match.truth().robots[0].truth.body;
+  EXPECT_FLOAT_EQ(after.x_mm, before.x_mm);
+  EXPECT_FLOAT_EQ(after.y_mm, before.y_mm);
+  EXPECT_FALSE(match.sense().robots[0].active);
+  EXPECT_EQ(match.roster().find({0, 1})->frames_missed, 1);
+
+  EXPECT_EQ(match.apply(forward_act({0, 1}, 1, 3, 5.f), 9), ActOutcome::kRejoined);
+  EXPECT_EQ(match.active_robots().size(), 2u);
+}
+
+TEST(Match, LateJoinerIsPlacedAtOnce) {
+  sim::Match match(small_config());
+  match.join({0, 1}, 1, 0);
+  match.start();
+  EXPECT_EQ(match.sense().robots.size(), 1u);
+  EXPECT_TRUE(match.join({1, 1}, 2, 0).accepted);
+  EXPECT_EQ(match.sense().robots.size(), 2u);
+}
+
+TEST(Match, FinishesAfterItsDuration) {
+  sim::Match match(small_config()); // 1 s
+  match.start();
+  int frames = 0;
+  while (!match.finished()) {
+    match.advance();
+    ++frames;
+  }
+  EXPECT_EQ(frames, 30);
+}
