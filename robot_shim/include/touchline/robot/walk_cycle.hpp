@@ -3,6 +3,23 @@
 // 2.2.2). Every 10 ms motion tick it advances the gait phase t within the period T and
 // computes both feet's poses; the world moves each foot by the displacement between two
 // ticks. Reads: the requested body velocity. Writes: feet poses and odometry.
+//
+// How it walks:
+// - The request is clamped to the speed limits; velocity() follows it at most accel*dt
+//   per tick per axis. A planned body pose integrates velocity() every tick.
+// - A cycle of T seconds is a left step (phase [0, T/2)) then a right step
+//   ([T/2, T)). When stepping starts from standing the first step is taken by the foot
+//   on the side of travel: the right foot (phase starts at T/2) when the request goes
+//   right, or, with no sideways part, turns clockwise; otherwise the left foot.
+// - At each step's start the walk predicts the planned body pose and velocity at the
+//   step's end (assuming the request holds) and lands the swing foot there, offset to
+//   its side by foot_separation/2 and half a step (velocity * T/4) ahead. The stance
+//   foot never moves; the swing foot moves only in the single-support part of the step.
+//   Steady walking therefore moves each foot velocity * T per cycle (150 mm at
+//   300 mm/s, T = 0.5 s) and the body exactly velocity * T per cycle.
+// - The body pose (odometry) is the midpoint of the feet and their mean heading.
+// - A zero request decelerates, lands the feet side by side (square, at
+//   foot_separation_mm around the planned pose) and then stands still.
 #include <string>
 
 #include "touchline/frame.hpp"
@@ -34,7 +51,10 @@ struct WalkRequest {
   float turn_rad_s = 0;   ///< + counter-clockwise
 };
 
-/// The step the thesis's WalkCycle is given: per-step sizes (mm, rad) for one step.
+/// The step the thesis's WalkCycle is given: per-step sizes (mm, rad) for one step,
+/// measured from the swing foot's lift-off pose to its landing pose in the body frame at
+/// the step's start. The stance foot does not move, so its forward travel is 0. Steady
+/// walking at 300 mm/s with T = 0.5 s gives the swing foot 150 mm a step.
 struct StepParams {
   float forward_left_mm = 0;  ///< ForwardL: forward travel of the left foot over the step
   float forward_right_mm = 0; ///< ForwardR: forward travel of the right foot over the step
@@ -81,7 +101,23 @@ class WalkCycle {
   float phase_s_ = 0;
   bool standing_ = true;
   bool left_swing_ = true;
-  // Helper-owned state (step start poses, targets, ...) goes here.
+  Pose2D planned_;          ///< body pose the walk aims for: velocity_ integrated
+  Pose2D lift_off_;         ///< swing foot's pose at the start of the step
+  Pose2D landing_;          ///< swing foot's pose at the end of the step
+  float step_time_s_ = 0;   ///< time into the current step, [0, period_s / 2)
+
+  float step_duration_s() const { return 0.5f * def_.period_s; }
+  Pose2D& swing_foot() { return left_swing_ ? feet_.left : feet_.right; }
+  /// Leaves standing, the first step taken by the foot on the side of travel.
+  void start_walking(const WalkRequest& target, float dt_s);
+  /// Plans the step now starting: landing pose and StepParams.
+  void begin_step(const WalkRequest& target, float dt_s);
+  /// Moves the swing foot to where it is `step_time_s_` into the step.
+  void move_swing_foot();
+  /// Feet at rest around `body`: side by side, square, foot_separation_mm apart.
+  FeetPose feet_at_rest(const Pose2D& body) const;
+  bool feet_at_rest_around_plan() const;
+  void stand();
 };
 
 /// Motion of each foot between two poses, in the body frame of `before` (see FootMotion).

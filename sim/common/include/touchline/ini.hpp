@@ -17,11 +17,11 @@ class IniSchema {
  public:
   explicit IniSchema(const std::string& caption) : options_(caption) {}
 
-  /// Binds `*field` to `key` ("section.name"); its current value is the default.
+  /// Binds `*field` to `key` ("section.name"). A read sets only the keys its source
+  /// names, so files and overrides can be applied one after another.
   template <typename T>
   IniSchema& bind(const char* key, T* field, const char* description) {
-    options_.add_options()(key, boost::program_options::value<T>(field)->default_value(*field),
-                           description);
+    options_.add_options()(key, boost::program_options::value<T>(field), description);
     return *this;
   }
 

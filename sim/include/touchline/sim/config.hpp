@@ -26,14 +26,22 @@ void bind(IniSchema& schema, FieldDef& def);
 void bind(IniSchema& schema, PhysicsDef& def);
 void bind(IniSchema& schema, MatchDef& def);
 
-/// Reads `path` (empty: defaults only), then applies "section.key=value" overrides, then
-/// checks ranges. Throws ConfigError with a one-line message.
+/// Reads `path` (empty: defaults only), then applies "section.key=value" overrides in
+/// order (later wins), then validates. Throws ConfigError with a one-line message: a
+/// missing file, an unknown key, a value that does not parse or is out of range.
 WorldConfig load_world_config(const std::string& path, const std::vector<std::string>& overrides = {});
 
-/// Checks ranges (positive lengths, goal inside the field, team size, ...). Throws ConfigError.
+/// Checks ranges (positive lengths and masses, goal narrower than the field, net inside
+/// the walls, goal box inside the field, team size 1..kMaxTeamSize, substeps >= 1,
+/// restitutions in [0, 1], ...). Throws ConfigError naming the key and the bad value,
+/// e.g. "match.team_size must be 1..7 (got 9)".
 void validate(const WorldConfig& config);
 
-/// Where a robot stands before the match: its own half, on the touchline, facing the field.
+/// Where a robot stands before the match: on the touchline of its own half, facing into
+/// the field. Team 0 (the -x half) stands on y = -half_width facing +y; team 1 is the
+/// same picture turned 180 degrees about the centre spot (y = +half_width, facing -y).
+/// Players 1..team_size are spread evenly in x between the goal box and the centre
+/// circle, player 1 (the keeper) nearest its own goal.
 Pose2D initial_pose(const Field& field, int team_size, RobotId id);
 
 } // namespace touchline::sim

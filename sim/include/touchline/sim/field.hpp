@@ -1,6 +1,8 @@
 #pragma once
 // Field geometry: the SPL pitch, read from the [field] section of a world config.
 // Millimetres, field frame (origin at the centre, +x towards the goal team 0 attacks).
+// The goal lines are x = +-length/2 and the touchlines y = +-width/2 (the lines' outer
+// edges); the goal posts stand centred on the goal lines, the nets behind them.
 #include "touchline/frame.hpp"
 
 namespace touchline::sim {
@@ -9,7 +11,7 @@ namespace touchline::sim {
 struct FieldDef {
   float length_mm = 6000.f;           ///< between the goal lines (outer edges of the lines)
   float width_mm = 4000.f;            ///< between the touchlines
-  float border_mm = 700.f;            ///< carpet beyond the lines, to the boundary walls
+  float border_mm = 700.f;            ///< carpet beyond the lines, to the boundary walls (> goal_depth_mm)
   float line_width_mm = 50.f;         ///< painted lines
   float goal_width_mm = 1400.f;       ///< between the posts' centres
   float goal_depth_mm = 500.f;        ///< from the goal line to the net's back
@@ -19,7 +21,7 @@ struct FieldDef {
   float penalty_area_length_mm = 0.f; ///< 0: no separate penalty area (2011); modern: 1650
   float penalty_area_width_mm = 0.f;  ///< modern: 4000
   float penalty_mark_distance_mm = 1800.f; ///< from the goal line
-  float centre_circle_diameter_mm = 1200.f;
+  float centre_circle_diameter_mm = 1200.f; ///< mm
 };
 
 /// Derived geometry helpers over a FieldDef.
@@ -29,15 +31,20 @@ class Field {
   const FieldDef& def() const { return def_; }
   float half_length() const { return def_.length_mm / 2; }
   float half_width() const { return def_.width_mm / 2; }
-  /// True inside the outer edges of the field lines.
+  /// x of the goal line of the goal `defending_team` defends: -half_length for team 0.
+  float goal_line_x(int defending_team) const;
+  /// True inside the outer edges of the field lines (the edges themselves count as inside).
   bool inside_lines(float x_mm, float y_mm) const;
   /// True on the carpet (inside the boundary walls).
   bool on_carpet(float x_mm, float y_mm) const;
   /// Centre of a post: team 0 defends the goal at -x. `left` as seen from the field centre looking at that goal.
   Pose2D goal_post(int defending_team, bool left) const;
-  /// True inside the goal box of the team defending at -x (team 0) or +x (team 1).
+  /// True inside the goal box (goal_box_length x goal_box_width, from the goal line into
+  /// the field) of the team defending at -x (team 0) or +x (team 1). Edges count as inside.
   bool in_goal_box(int defending_team, float x_mm, float y_mm) const;
-  /// True inside the goal itself (behind the line, between the posts): a goal when the ball is wholly in.
+  /// True inside the goal itself: strictly behind the goal line, at most goal_depth_mm
+  /// behind it, and between the side nets (|y| <= goal_width/2). For a point; a goal is
+  /// scored when the ball's centre is in by more than its radius.
   bool in_goal(int defending_team, float x_mm, float y_mm) const;
 
  private:

@@ -14,22 +14,25 @@
 namespace touchline::sim {
 
 /// Physics constants, read from the [physics] section of a world config.
+/// Restitution: the ball bounces off a foot with ball_restitution; off a wall, post or
+/// net with that part's own restitution (not Box2D's max of the pair, which would make a
+/// net as lively as a foot). Friction: foot_friction for every contact.
 struct PhysicsDef {
-  float ball_diameter_mm = 65.f;         ///< SPL 2011 orange ball
-  float ball_mass_kg = 0.055f;
-  float ball_restitution = 0.5f;         ///< bounce off posts, walls, feet (Box2D takes the max of the pair)
-  float ball_rolling_decel_mm_s2 = 300.f;///< constant rolling-resistance deceleration on the carpet
+  float ball_diameter_mm = 65.f;         ///< SPL 2011 orange ball, mm
+  float ball_mass_kg = 0.055f;           ///< kg
+  float ball_restitution = 0.5f;         ///< bounce off feet, 0..1
+  float ball_rolling_decel_mm_s2 = 300.f;///< constant rolling-resistance deceleration on the carpet, mm/s^2
   float ball_linear_damping = 0.2f;      ///< extra velocity-proportional drag, 1/s
-  float foot_length_mm = 160.f;          ///< foot rectangle along the robot's x
-  float foot_width_mm = 90.f;            ///< foot rectangle along the robot's y
+  float foot_length_mm = 160.f;          ///< foot rectangle along the robot's x, mm
+  float foot_width_mm = 90.f;            ///< foot rectangle along the robot's y, mm
   float foot_mass_kg = 2.5f;             ///< half the robot: feet barely yield to the ball
-  float foot_friction = 0.6f;
-  float wall_restitution = 0.3f;
-  float post_restitution = 0.5f;
-  float net_restitution = 0.1f;
-  int substeps = 2;                      ///< Box2D steps per 10 ms motion tick
-  int velocity_iterations = 8;
-  int position_iterations = 3;
+  float foot_friction = 0.6f;            ///< Coulomb friction of every contact
+  float wall_restitution = 0.3f;         ///< ball off the boundary walls, 0..1
+  float post_restitution = 0.5f;         ///< ball off the goal posts, 0..1
+  float net_restitution = 0.f;           ///< ball off the nets, 0..1: nets absorb the ball, so a goal stays in
+  int substeps = 2;                      ///< Box2D steps per 10 ms motion tick, >= 1
+  int velocity_iterations = 8;           ///< Box2D solver iterations per step
+  int position_iterations = 3;           ///< Box2D solver iterations per step
 };
 
 /// Ground truth of one robot.
@@ -51,6 +54,10 @@ struct TickMotion {
   FootMotion right;
 };
 
+/// Notes on the physics: pressed contacts (feet against feet) rest overlapping by Box2D's
+/// linear slop, 5 mm; a 10 m/s ball may overlap a wall or foot by up to 15 mm for the
+/// step of impact. The ball does not spin about the vertical (a top-down spin is not a
+/// real ball's), and rolls to a stop under ball_rolling_decel plus linear damping.
 class World {
  public:
   World(const FieldDef& field, const PhysicsDef& physics, float foot_separation_mm = 100.f);
@@ -58,23 +65,30 @@ class World {
   World(const World&) = delete;
   World& operator=(const World&) = delete;
 
-  /// Adds a robot standing at `body` with its feet foot_separation_mm apart; returns its index.
+  /// Adds a robot standing at `body` with its feet foot_separation_mm apart (left foot at
+  /// body-frame y = +sep/2), both facing body.theta; returns its index (0, 1, ...).
   int add_robot(RobotId id, const Pose2D& body);
   /// Puts a robot down at `body`, feet at rest (re-entry, tests).
   void place_robot(int index, const Pose2D& body);
+  /// The ball starts at rest on the centre spot; this moves it (and sets its velocity).
   void place_ball(float x_mm, float y_mm, float vx_mm_s = 0, float vy_mm_s = 0);
 
-  /// Advances one 10 ms motion tick. motions[i] drives robot i (size must equal robot_count()).
+  /// Advances one 10 ms motion tick. motions[i] drives robot i (size must equal
+  /// robot_count(), else std::invalid_argument): each foot moves by its command, in the
+  /// body frame of the current feet, unless something is in its way. A foot with no
+  /// command (zero motion) stays put.
   void step(const std::vector<TickMotion>& motions);
 
   int robot_count() const;
-  RobotTruth robot(int index) const;
+  RobotTruth robot(int index) const; ///< std::out_of_range for a bad index
   BallTruth ball() const;
   const Field& field() const;
+  const PhysicsDef& physics() const;
   int64_t ticks() const; ///< motion ticks stepped so far
 
-  /// FNV-1a over the exact bytes of every body's position, angle and velocities: equal
-  /// hashes mean bit-identical worlds (the determinism tests compare these).
+  /// FNV-1a 64 over the exact float bytes of every dynamic body's position, angle and
+  /// velocities (ball, then feet, in creation order) and the tick count: equal hashes
+  /// mean bit-identical worlds (the determinism tests compare these).
   uint64_t state_hash() const;
 
  private:

@@ -1,0 +1,172 @@
+"""Multi-process matches: sim_world and robot_shim processes in lockstep over LCM."""
+import math
+
+import pytest
+
+from touchline_harness import (LCM_URL, nominal_distance, robot_entry, start_robot, start_world,
+                               walk_def)
+from truth_listener import TruthListener
+
+WALK_S = 10.0
+
+
+def walked(summary_start: dict, summary_end: dict) -> tuple:
+    return summary_end["x_mm"] - summary_start["x_mm"], summary_end["y_mm"] - summary_start["y_mm"]
+
+
+@pytest.fixture
+def truth():
+    listener = TruthListener(LCM_URL)
+    yield listener
+    listener.stop()
+
+
+def start_pose(truth, team, player):
+    first = truth.frames[0]
+    r = next(r for r in first.robots if r.team == team and r.player == player)
+    return r.body
+
+
+def test_full_speed_forward_covers_the_nominal_distance(tmp_path, truth):
+    walk = walk_def()
+    match = start_world(tmp_path, 1, WALK_S)
+    start_robot(match, 0, 1, "walk", forward=walk["max_forward_mm_s"])
+    summary = match.finish()
+    start = start_pose(truth, 0, 1)
+    end = robot_entry(summary, 0, 1)
+    # Team 0 starts on the touchline facing +y: forward is +y.
+    distance = end["y_mm"] - start.y_mm
+    nominal = nominal_distance(walk["max_forward_mm_s"], walk["accel_forward_mm_s2"], WALK_S)
+    assert distance == pytest.approx(nominal, rel=0.10)
+    assert abs(end["x_mm"] - start.x_mm) < 0.05 * nominal, "walked straight"
+    assert end["frames_answered"] == summary["frames"] == 300
+
+
+def test_full_speed_sideways_both_ways_covers_the_nominal_distance(tmp_path, truth):
+    walk = walk_def()
+    speed = walk["max_left_mm_s"]
+    match = start_world(tmp_path, 2, WALK_S, "--set", "match.team_size=4")
+    # Both end up walking towards +x, on opposite touchlines: team 0 faces +y, so its
+    # right is +x; team 1 faces -y, so its left is +x.
+    start_robot(match, 0, 4, "walk", left=-speed)
+    start_robot(match, 1, 4, "walk", left=speed)
+    summary = match.finish()
+    nominal = nominal_distance(speed, walk["accel_left_mm_s2"], WALK_S)
+    for team in (0, 1):
+        start = start_pose(truth, team, 4)
+        end = robot_entry(summary, team, 4)
+        assert end["x_mm"] - start.x_mm == pytest.approx(nominal, rel=0.10), f"team {team}"
+        assert abs(end["y_mm"] - start.y_mm) < 0.05 * nominal
+
+
+def test_full_speed_turn_covers_the_nominal_angle(tmp_path, truth):
+    walk = walk_def()
+    rate = walk["max_turn_rad_s"]
+    match = start_world(tmp_path, 1, WALK_S)
+    start_robot(match, 0, 1, "walk", turn=rate)
+    summary = match.finish()
+    truth.wait_for_frame(summary["frames"] - 1)
+    nominal = nominal_distance(rate, walk["accel_turn_rad_s2"], WALK_S)
+    assert truth.total_turn(0, 1) == pytest.approx(nominal, rel=0.10)
+    start = start_pose(truth, 0, 1)
+    end = robot_entry(summary, 0, 1)
+    assert math.hypot(end["x_mm"] - start.x_mm, end["y_mm"] - start.y_mm) < 150, "turned on the spot"
+
+
+def test_eight_robots_all_answer_every_frame(tmp_path):
+    match = start_world(tmp_path, 8, 5.0)
+    for team in (0, 1):
+        for player in range(1, 5):
+            start_robot(match, team, player, "walk", forward=150, turn=0.2 * player)
+    summary = match.finish()
+    assert summary["frames"] == 150
+    assert len(summary["robots"]) == 8
+    for r in summary["robots"]:
+        assert r["active"] and r["frames_answered"] == 150 and r["frames_missed"] == 0, r
+    assert summary["malformed"] == 0 and summary["stale"] == 0
+
+
+def test_a_killed_shim_is_reported_and_the_match_goes_on_and_it_may_rejoin(tmp_path, truth):
+    match = start_world(tmp_path, 2, 8.0, "--robot-timeout-ms", "300")
+    start_robot(match, 0, 1, "walk", forward=100)
+    victim = start_robot(match, 0, 2, "walk", forward=100)
+    truth.wait_for_frame(30)
+    victim.kill()
+    match.world.wait_for_line("team 0 player 2 no answer within 300 ms")
+    truth.wait_for_frame(truth.frames[-1].frame + 30)  # the world went on without it
+    inactive = [r for r in truth.frames[-1].robots if r.player == 2][0]
+    assert not inactive.active
+    del match.robots[next(k for k, p in match.robots.items() if p is victim)]
+    start_robot(match, 0, 2, "walk", forward=100)  # a restarted shim takes the robot back
+    match.world.wait_for_line("team 0 player 2 answered again")
+    summary = match.finish()
+    survivor = robot_entry(summary, 0, 1)
+    assert survivor["frames_answered"] == summary["frames"] == 240
+    returned = robot_entry(summary, 0, 2)
+    assert returned["active"] and returned["frames_missed"] >= 1
+    assert returned["frames_answered"] + returned["frames_missed"] <= summary["frames"]
+
+
+def test_second_shim_claiming_a_robot_is_refused(tmp_path):
+    match = start_world(tmp_path, 1, 3.0)
+    start_robot(match, 1, 3)
+    match.world.wait_for_line("kick-off")
+    intruder = start_robot(match, 1, 3)
+    assert intruder.wait() == 2
+    assert any("team 1 player 3 is already played by another robot_shim" in l for l in intruder.stderr), intruder.stderr
+    del match.robots[next(k for k, p in match.robots.items() if p is intruder)]
+    match.finish()
+
+
+def test_player_outside_the_team_is_refused(tmp_path):
+    match = start_world(tmp_path, 1, 2.0, "--set", "match.team_size=3")
+    outsider = start_robot(match, 0, 5)
+    assert outsider.wait() == 2
+    assert outsider.stderr[-1].endswith("player 5 is not in a team of 3 (players 1..3)"), outsider.stderr
+    del match.robots[next(iter(match.robots))]
+    start_robot(match, 0, 3)
+    match.finish()
+
+
+def test_same_seed_gives_the_same_truth_stream(tmp_path):
+    hashes = []
+    for _ in range(2):
+        match = start_world(tmp_path, 4, 6.0, "--seed", "7")
+        for player, (x, y) in enumerate([(-2000, 0), (-1000, 1000), (-1000, -1000), (0, 0)], start=1):
+            start_robot(match, 0, player, "goto", x=x, y=y, theta=0.5)
+        summary = match.finish()
+        hashes.append(summary["truth_hash"])
+    assert hashes[0] == hashes[1]
+
+
+def test_malformed_messages_are_reported_and_ignored(tmp_path):
+    import lcm
+    from touchline import act_t
+
+    match = start_world(tmp_path, 1, 3.0)
+    start_robot(match, 0, 1, "walk", forward=100)
+    match.world.wait_for_line("kick-off")
+    bus = lcm.LCM(LCM_URL)
+    bus.publish("TL_ACT_0_1", b"\x00garbage")
+    bad = act_t()
+    bad.team, bad.player, bad.motion_ticks = 0, 9, 0
+    bus.publish("TL_ACT_0_9", bad.encode())
+    match.world.wait_for_line("cannot decode as act_t")
+    match.world.wait_for_line("no such robot (team 0, player 9)")
+    summary = match.finish()
+    assert summary["malformed"] == 2
+    assert robot_entry(summary, 0, 1)["frames_answered"] == summary["frames"]
+
+
+def test_realtime_mode_paces_and_free_mode_never_waits(tmp_path):
+    paced = start_world(tmp_path, 1, 2.0, "--mode", "realtime", "--speed", "10")
+    start_robot(paced, 0, 1, "walk", forward=100)
+    summary = paced.finish()
+    assert summary["wall_s"] >= 2.0 / 10  # never ahead of the clock
+    assert robot_entry(summary, 0, 1)["frames_answered"] == 60
+
+    free = start_world(tmp_path, 1, 2.0, "--mode", "free", "--speed", "10")
+    start_robot(free, 0, 1, "walk", forward=100)
+    summary = free.finish()
+    assert summary["wall_s"] >= 2.0 / 10
+    assert robot_entry(summary, 0, 1)["frames_answered"] > 0

@@ -1,0 +1,54 @@
+"""Listens to TL_TRUTH over LCM (Python bindings + the generated types) in a thread."""
+from __future__ import annotations
+
+import math
+import select
+import threading
+
+import lcm
+
+from touchline import world_truth_t
+
+
+class TruthListener:
+    def __init__(self, url: str):
+        self.lcm = lcm.LCM(url)
+        self.frames: list = []
+        self._new_frame = threading.Condition()
+        self._stop = threading.Event()
+        self.lcm.subscribe("TL_TRUTH", self._on_truth)
+        self._thread = threading.Thread(target=self._run, daemon=True)
+        self._thread.start()
+
+    def _on_truth(self, channel: str, data: bytes) -> None:
+        msg = world_truth_t.decode(data)
+        with self._new_frame:
+            self.frames.append(msg)
+            self._new_frame.notify_all()
+
+    def _run(self) -> None:
+        fd = self.lcm.fileno()
+        while not self._stop.is_set():
+            ready, _, _ = select.select([fd], [], [], 0.05)
+            if ready:
+                self.lcm.handle()
+
+    def wait_for_frame(self, frame: int, timeout: float = 60) -> None:
+        with self._new_frame:
+            ok = self._new_frame.wait_for(lambda: self.frames and self.frames[-1].frame >= frame, timeout)
+        assert ok, f"no world_truth_t for frame {frame} within {timeout} s"
+
+    def stop(self) -> None:
+        self._stop.set()
+        self._thread.join(timeout=5)
+
+    def total_turn(self, team: int, player: int) -> float:
+        """Heading change summed frame to frame (unwrapped), radians."""
+        total, last = 0.0, None
+        for f in self.frames:
+            for r in f.robots:
+                if r.team == team and r.player == player:
+                    if last is not None:
+                        total += math.remainder(r.body.theta_rad - last, 2 * math.pi)
+                    last = r.body.theta_rad
+        return total
