@@ -14,6 +14,7 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include "touchline/game_state_t.hpp"
+#include "touchline/hash.hpp"
 #include "touchline/join_reply_t.hpp"
 #include "touchline/join_t.hpp"
 #include "touchline/robot_status_t.hpp"
@@ -62,14 +63,6 @@ world_truth_t to_msg(const sim::TruthFrame& truth) {
   }
   return m;
 }
-
-/// FNV-1a 64, folded over a byte stream.
-struct Fnv1a {
-  uint64_t value = 1469598103934665603ull;
-  void add(const uint8_t* data, size_t size) {
-    for (size_t i = 0; i < size; ++i) value = (value ^ data[i]) * 1099511628211ull;
-  }
-};
 
 /// Publishes with a pre-sized buffer, returning the encoded bytes (for the truth hash).
 template <typename Msg>
@@ -128,7 +121,7 @@ class WorldNode {
     match_.advance();
     const auto bytes = publish(lcm_, kTruthChannel, to_msg(match_.truth()));
     truth_hash_.add(bytes.data(), bytes.size());
-    summary_.truth_hash = truth_hash_.value;
+    summary_.truth_hash = truth_hash_.value();
     if (match_.frame() % kFramesPerSecond == 0) {
       publish_game_state(GameState::kPlaying);
       publish_status_all("");

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "touchline/angles.hpp"
+#include "touchline/hash.hpp"
 
 namespace touchline::sim {
 
@@ -62,16 +63,6 @@ class StaticRestitution : public b2ContactListener {
       contact->SetRestitution(b->GetRestitution());
   }
 };
-
-void hash_bytes(uint64_t& hash, const void* data, std::size_t size) {
-  const auto* bytes = static_cast<const unsigned char*>(data);
-  for (std::size_t i = 0; i < size; ++i) {
-    hash ^= bytes[i];
-    hash *= 1099511628211ull; // FNV-1a 64 prime
-  }
-}
-
-void hash_float(uint64_t& hash, float value) { hash_bytes(hash, &value, sizeof value); }
 
 } // namespace
 
@@ -336,15 +327,15 @@ const PhysicsDef& World::physics() const { return impl_->physics; }
 int64_t World::ticks() const { return impl_->ticks; }
 
 uint64_t World::state_hash() const {
-  uint64_t hash = 14695981039346656037ull; // FNV-1a 64 offset basis
+  Fnv1a hash;
   for (const b2Body* body : impl_->dynamic_bodies) {
     const b2Vec2 p = body->GetPosition();
     const b2Vec2 v = body->GetLinearVelocity();
     for (float value : {p.x, p.y, body->GetAngle(), v.x, v.y, body->GetAngularVelocity()})
-      hash_float(hash, value);
+      hash.add_value(value);
   }
-  hash_bytes(hash, &impl_->ticks, sizeof impl_->ticks);
-  return hash;
+  hash.add_value(impl_->ticks);
+  return hash.value();
 }
 
 } // namespace touchline::sim
