@@ -1,0 +1,79 @@
+#pragma once
+// Shared pieces of touchline_bench: options, results, process helpers, and the two
+// measurements (lcm_floor.cpp, lockstep_runs.cpp).
+#include <sys/types.h>
+
+#include <chrono>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace touchline::bench {
+
+
+constexpr int kFailure = 1;
+constexpr int kUsageError = 2;
+constexpr const char* kPingChannel = "TLBENCH_PING";
+constexpr const char* kStopChannel = "TLBENCH_STOP";
+constexpr const char* kPongPrefix = "TLBENCH_PONG_";
+constexpr double kFramePeriodUs = 1e6 / 30.0;  // one 30 Hz camera frame
+
+using Clock = std::chrono::steady_clock;
+
+/// A failure to report as one line (exit status 1).
+struct BenchError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+
+struct Options {
+  std::string bin_dir;
+  std::string lcm_url = "udpm://239.255.76.67:7667?ttl=0";
+  std::string json_path;
+  double duration_s = 60;
+  int repeat = 3;
+  int rounds = 3000;
+  int warmup = 200;
+  double run_timeout_s = -1;  // < 0: derived from the duration
+  bool keep_logs = false;
+};
+
+struct FloorResult {
+  int responders = 0;
+  double median_us = 0;
+  double p90_us = 0;
+  double min_us = 0;
+  double max_us = 0;
+  int lost_rounds = 0;  // rounds where some pong never came (not timed)
+};
+
+struct RunResult {
+  double rtf = 0;
+  double sim_wall_s = 0;   // sim_world's own wall time of the match loop
+  double total_wall_s = 0; // spawn to last exit (process start-up, join, shutdown included)
+  long frames_missed = 0;
+};
+
+struct LockstepResult {
+  int robots = 0;
+  std::vector<RunResult> runs;
+  double median_rtf = 0;
+  double median_sim_wall_s = 0;
+  double median_total_wall_s = 0;
+};
+
+double seconds_since(Clock::time_point t0);
+/// Nearest-rank percentile (q in [0, 1]) of a copy of xs; xs must not be empty.
+double percentile(std::vector<double> xs, double q);
+double median(const std::vector<double>& xs);
+std::string describe_status(int status);
+/// Makes this (forked) child die with its parent; returns false if the parent is already gone.
+bool die_with_parent(pid_t parent);
+void kill_and_reap(pid_t pid);
+
+/// Round trip from one ping to all `responders` pongs, over forked responder processes.
+FloorResult measure_floor(const Options& opt, int responders);
+/// Real-time factor of sim_world + `robots` robot_shim processes in lockstep.
+LockstepResult measure_lockstep(const Options& opt, int robots, const std::string& dir, double timeout_s);
+
+}  // namespace touchline::bench

@@ -1,0 +1,211 @@
+// touchline_bench, part 1: the LCM round-trip floor with N responder processes.
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <boost/program_options.hpp>
+#include <lcm/lcm-cpp.hpp>
+
+#include "bench.hpp"
+
+namespace touchline::bench {
+
+
+/// A responder process: answers each ping on its own pong channel until told to stop.
+class Responder {
+public:
+  Responder(lcm::LCM& lcm, int index) : lcm_(lcm), pong_channel_(kPongPrefix + std::to_string(index)) {}
+
+  void on_ping(const lcm::ReceiveBuffer* rbuf, const std::string&) {
+    lcm_.publish(pong_channel_, rbuf->data, rbuf->data_size);  // echo the 8-byte sequence number
+  }
+  void on_stop(const lcm::ReceiveBuffer*, const std::string&) { stop = true; }
+
+  bool stop = false;
+
+private:
+  lcm::LCM& lcm_;
+  std::string pong_channel_;
+};
+
+[[noreturn]] void responder_main(const std::string& url, int index, pid_t parent) {
+  if (!die_with_parent(parent)) _exit(3);
+  int code = 0;
+  {
+    lcm::LCM lcm(url);
+    if (!lcm.good()) _exit(4);
+    Responder responder(lcm, index);
+    lcm.subscribe(kPingChannel, &Responder::on_ping, &responder);
+    lcm.subscribe(kStopChannel, &Responder::on_stop, &responder);
+    while (!responder.stop) {
+      if (lcm.handleTimeout(200) < 0) {
+        code = 5;
+        break;
+      }
+    }
+  }
+  _exit(code);
+}
+
+/// The parent's side: counts the pongs for the sequence number in flight.
+class PongCounter {
+public:
+  explicit PongCounter(int responders) : seen_(static_cast<size_t>(responders), false) {}
+
+  void expect(uint64_t seq) {
+    seq_ = seq;
+    std::fill(seen_.begin(), seen_.end(), false);
+    count_ = 0;
+  }
+  void on_pong(const lcm::ReceiveBuffer* rbuf, const std::string& channel) {
+    uint64_t seq = 0;
+    if (rbuf->data_size != sizeof seq) return;
+    std::memcpy(&seq, rbuf->data, sizeof seq);
+    if (seq != seq_) return;  // a late answer to an earlier (lost) round
+    const size_t index = std::strtoul(channel.c_str() + std::strlen(kPongPrefix), nullptr, 10);
+    if (index >= seen_.size() || seen_[index]) return;
+    seen_[index] = true;
+    ++count_;
+  }
+  bool all() const { return count_ == seen_.size(); }
+  std::string missing() const {
+    std::string s;
+    for (size_t i = 0; i < seen_.size(); ++i)
+      if (!seen_[i]) s += (s.empty() ? "" : ",") + std::to_string(i);
+    return s;
+  }
+
+private:
+  uint64_t seq_ = 0;
+  std::vector<bool> seen_;
+  size_t count_ = 0;
+};
+
+/// Publishes ping seq and handles messages until all pongs for it came or timeout_ms passed.
+bool ping_round(lcm::LCM& lcm, PongCounter& counter, uint64_t seq, int timeout_ms) {
+  counter.expect(seq);
+  if (lcm.publish(kPingChannel, &seq, sizeof seq) != 0) throw BenchError("LCM publish failed");
+  const auto deadline = Clock::now() + std::chrono::milliseconds(timeout_ms);
+  while (!counter.all()) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+    if (left <= 0) return false;
+    if (lcm.handleTimeout(static_cast<int>(left)) < 0) throw BenchError("LCM handle failed");
+  }
+  return true;
+}
+
+FloorResult measure_floor(const Options& opt, int responders) {
+  std::cout << std::flush;  // nothing buffered may be written twice by the children
+  std::cerr << std::flush;
+  const pid_t parent = getpid();
+  std::vector<pid_t> children;
+  const auto cleanup = [&] {
+    for (pid_t pid : children) kill_and_reap(pid);
+    children.clear();
+  };
+  for (int i = 0; i < responders; ++i) {
+    const pid_t pid = fork();
+    if (pid < 0) {
+      cleanup();
+      throw BenchError(std::string("fork failed: ") + std::strerror(errno));
+    }
+    if (pid == 0) responder_main(opt.lcm_url, i, parent);
+    children.push_back(pid);
+  }
+
+  FloorResult result;
+  result.responders = responders;
+  try {
+    lcm::LCM lcm(opt.lcm_url);
+    if (!lcm.good()) throw BenchError("cannot open LCM at " + opt.lcm_url);
+    PongCounter counter(responders);
+    lcm.subscribe(std::string(kPongPrefix) + ".*", &PongCounter::on_pong, &counter);
+
+    // Until every responder has subscribed (answers), keep pinging; 10 s at most.
+    uint64_t seq = 1;
+    const auto join_start = Clock::now();
+    while (!ping_round(lcm, counter, seq++, 50)) {
+      for (pid_t pid : children) {
+        int status = 0;
+        if (waitpid(pid, &status, WNOHANG) == pid) {
+          children.erase(std::find(children.begin(), children.end(), pid));
+          throw BenchError("LCM responder (pid " + std::to_string(pid) + ") " + describe_status(status) +
+                           " before answering");
+        }
+      }
+      if (seconds_since(join_start) > 10)
+        throw BenchError("LCM responders " + counter.missing() + " of " + std::to_string(responders) +
+                         " never answered a ping within 10 s (is multicast routed on lo? run through "
+                         "bench/run or tools/netns)");
+    }
+
+    std::vector<double> rtt_us;
+    rtt_us.reserve(static_cast<size_t>(opt.rounds));
+    for (int round = 0; round < opt.warmup + opt.rounds; ++round) {
+      const auto t0 = Clock::now();
+      const bool ok = ping_round(lcm, counter, seq++, 1000);
+      const double us = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
+      if (!ok) {
+        ++result.lost_rounds;
+        if (result.lost_rounds > std::max(10, (opt.warmup + opt.rounds) / 100))
+          throw BenchError("LCM round trip: " + std::to_string(result.lost_rounds) +
+                           " rounds lost (responders " + counter.missing() + " silent for 1 s)");
+        continue;
+      }
+      if (round >= opt.warmup) rtt_us.push_back(us);
+    }
+    if (rtt_us.empty()) throw BenchError("LCM round trip: no round completed");
+    result.median_us = median(rtt_us);
+    result.p90_us = percentile(rtt_us, 0.9);
+    result.min_us = *std::min_element(rtt_us.begin(), rtt_us.end());
+    result.max_us = *std::max_element(rtt_us.begin(), rtt_us.end());
+
+    // Stop the responders (resent in case a datagram is lost); kill whoever lingers.
+    const char stop = 1;
+    const auto stop_start = Clock::now();
+    while (!children.empty() && seconds_since(stop_start) < 2) {
+      lcm.publish(kStopChannel, &stop, 1);
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      for (auto it = children.begin(); it != children.end();) {
+        int status = 0;
+        if (waitpid(*it, &status, WNOHANG) == *it) {
+          if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+            throw BenchError("LCM responder (pid " + std::to_string(*it) + ") " + describe_status(status));
+          it = children.erase(it);
+        } else {
+          ++it;
+        }
+      }
+    }
+    if (!children.empty())
+      throw BenchError(std::to_string(children.size()) + " LCM responder(s) ignored the stop message for 2 s");
+  } catch (...) {
+    cleanup();
+    throw;
+  }
+  return result;
+}
+
+
+}  // namespace touchline::bench
