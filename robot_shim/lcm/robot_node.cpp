@@ -3,7 +3,6 @@
 #include <unistd.h>
 
 #include <atomic>
-#include <chrono>
 #include <ostream>
 #include <random>
 
@@ -18,11 +17,6 @@ namespace touchline::transport {
 namespace {
 
 std::atomic<bool> g_stop{false};
-
-int64_t wall_us() {
-  using namespace std::chrono;
-  return duration_cast<microseconds>(steady_clock::now().time_since_epoch()).count();
-}
 
 /// Tells this process's joins and acts from those of another shim claiming the same robot.
 int64_t random_instance() {

@@ -110,14 +110,8 @@ bool near(const Pose2D& a, const Pose2D& b) {
 WalkCycle::WalkCycle(const WalkDef& def) : def_(def) { reset(); }
 
 void WalkCycle::reset() {
-  velocity_ = {};
-  step_ = {};
-  phase_s_ = 0;
-  step_time_s_ = 0;
-  standing_ = true;
-  left_swing_ = true;
   planned_ = {};
-  feet_ = feet_at_rest(planned_);
+  stand();
   lift_off_ = landing_ = feet_.left;
 }
 

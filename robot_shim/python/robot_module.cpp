@@ -1,0 +1,154 @@
+#include "touchline/python/robot_module.hpp"
+
+#include <pybind11/stl.h>
+
+#include "touchline/robot_api/blackboard.hpp"
+
+namespace py = pybind11;
+
+namespace touchline::python {
+
+namespace {
+
+using namespace api;
+namespace AC = api::ActionCommand;
+
+/// A read-only attribute that hands Python a copy: a reference would let behaviour code
+/// write through nested values (blackboard.localisation.robotPos.x = ...).
+template <typename Class, typename Value>
+void copy_readonly(py::class_<Class>& cls, const char* name, Value Class::*member) {
+  cls.def_property_readonly(name, [member](const Class& self) { return self.*member; });
+}
+
+void define_geometry(py::module_& m) {
+  py::class_<AbsCoord>(m, "AbsCoord", "A field or odometry pose: x, y (mm), theta (rad)")
+      .def(py::init<>())
+      .def(py::init([](float x, float y, float theta) { return AbsCoord{x, y, theta}; }), py::arg("x"),
+           py::arg("y"), py::arg("theta") = 0.f)
+      .def_readwrite("x", &AbsCoord::x)
+      .def_readwrite("y", &AbsCoord::y)
+      .def_readwrite("theta", &AbsCoord::theta)
+      .def("__repr__", [](const AbsCoord& c) {
+        return "AbsCoord(" + std::to_string(c.x) + ", " + std::to_string(c.y) + ", " + std::to_string(c.theta) + ")";
+      });
+  py::class_<RRCoord>(m, "RRCoord", "Robot-relative position: distance (mm), heading (rad, + left)")
+      .def(py::init<>())
+      .def(py::init([](float distance, float heading) { return RRCoord{distance, heading}; }),
+           py::arg("distance"), py::arg("heading"))
+      .def_readwrite("distance", &RRCoord::distance)
+      .def_readwrite("heading", &RRCoord::heading)
+      .def("x", &RRCoord::x, "forward component, mm")
+      .def("y", &RRCoord::y, "left component, mm");
+  m.def("normaliseTheta", &normaliseTheta, "wraps an angle into [-pi, pi)");
+  m.def("toRobotRelative", &toRobotRelative, py::arg("robot"), py::arg("x"), py::arg("y"),
+        "robot-relative coordinates of the field point (x, y) seen from `robot`");
+}
+
+void define_action_command(py::module_& m) {
+  py::enum_<AC::ActionType>(m, "ActionType")
+      .value("NONE", AC::ActionType::NONE)
+      .value("STAND", AC::ActionType::STAND)
+      .value("WALK", AC::ActionType::WALK)
+      .value("DRIBBLE", AC::ActionType::DRIBBLE)
+      .value("KICK", AC::ActionType::KICK)
+      .value("GETUP_FRONT", AC::ActionType::GETUP_FRONT)
+      .value("GETUP_BACK", AC::ActionType::GETUP_BACK)
+      .value("DEAD", AC::ActionType::DEAD);
+  py::enum_<AC::Foot>(m, "Foot").value("LEFT", AC::Foot::LEFT).value("RIGHT", AC::Foot::RIGHT);
+
+  py::class_<AC::Head>(m, "Head", "head request: yaw, pitch (rad), isRelative, yawSpeed, pitchSpeed (0..1]")
+      .def(py::init<>())
+      .def_readwrite("yaw", &AC::Head::yaw)
+      .def_readwrite("pitch", &AC::Head::pitch)
+      .def_readwrite("isRelative", &AC::Head::isRelative)
+      .def_readwrite("yawSpeed", &AC::Head::yawSpeed)
+      .def_readwrite("pitchSpeed", &AC::Head::pitchSpeed);
+  py::class_<AC::Body>(m, "Body", "body request: actionType, forward, left (mm/s), turn (rad/s), power, bend, speed, foot")
+      .def(py::init<>())
+      .def_readwrite("actionType", &AC::Body::actionType)
+      .def_readwrite("forward", &AC::Body::forward)
+      .def_readwrite("left", &AC::Body::left)
+      .def_readwrite("turn", &AC::Body::turn)
+      .def_readwrite("power", &AC::Body::power)
+      .def_readwrite("bend", &AC::Body::bend)
+      .def_readwrite("speed", &AC::Body::speed)
+      .def_readwrite("foot", &AC::Body::foot);
+  py::class_<AC::LED>(m, "LED", "LED request: chest (0xRRGGBB)")
+      .def(py::init<>())
+      .def_readwrite("chest", &AC::LED::chest);
+  py::class_<AC::All>(m, "All", "a whole request: head, body, leds, sonar")
+      .def(py::init<>())
+      .def_readwrite("head", &AC::All::head)
+      .def_readwrite("body", &AC::All::body)
+      .def_readwrite("leds", &AC::All::leds)
+      .def_readwrite("sonar", &AC::All::sonar);
+}
+
+void define_blackboard(py::module_& m) {
+  py::enum_<GameState>(m, "GameState")
+      .value("INITIAL", GameState::INITIAL)
+      .value("READY", GameState::READY)
+      .value("SET", GameState::SET)
+      .value("PLAYING", GameState::PLAYING)
+      .value("FINISHED", GameState::FINISHED);
+
+  // Read-only views: behaviour code reads the Blackboard, only adapters write it.
+  py::class_<MotionBlackboard> motion(m, "MotionBlackboard");
+  copy_readonly(motion, "odometry", &MotionBlackboard::odometry);
+  copy_readonly(motion, "active", &MotionBlackboard::active);
+  motion.def_readonly("headYaw", &MotionBlackboard::headYaw)
+      .def_readonly("headPitch", &MotionBlackboard::headPitch)
+      .def_readonly("standing", &MotionBlackboard::standing)
+      .def_readonly("ticks", &MotionBlackboard::ticks);
+
+  py::class_<LocalisationBlackboard> localisation(m, "LocalisationBlackboard");
+  copy_readonly(localisation, "robotPos", &LocalisationBlackboard::robotPos);
+  copy_readonly(localisation, "ballPos", &LocalisationBlackboard::ballPos);
+  copy_readonly(localisation, "ballPosRR", &LocalisationBlackboard::ballPosRR);
+  copy_readonly(localisation, "teamBallPos", &LocalisationBlackboard::teamBallPos);
+  localisation.def_readonly("ballLostCount", &LocalisationBlackboard::ballLostCount);
+
+  py::class_<VisionBlackboard> vision(m, "VisionBlackboard");
+  copy_readonly(vision, "ball", &VisionBlackboard::ball);
+  vision.def_readonly("ballSeen", &VisionBlackboard::ballSeen).def_readonly("frame", &VisionBlackboard::frame);
+
+  py::class_<GameControllerBlackboard>(m, "GameControllerBlackboard")
+      .def_readonly("state", &GameControllerBlackboard::state)
+      .def_readonly("team", &GameControllerBlackboard::team)
+      .def_readonly("playerNumber", &GameControllerBlackboard::playerNumber)
+      .def_readonly("penalised", &GameControllerBlackboard::penalised)
+      .def_readonly("score", &GameControllerBlackboard::score)
+      .def_readonly("secsRemaining", &GameControllerBlackboard::secsRemaining);
+  py::class_<TeamMessage>(m, "TeamMessage")
+      .def_readonly("playerNumber", &TeamMessage::playerNumber)
+      .def_readonly("utime", &TeamMessage::utime)
+      .def_property_readonly("data", [](const TeamMessage& t) {
+        return py::bytes(reinterpret_cast<const char*>(t.data.data()), t.data.size());
+      });
+  py::class_<ReceiverBlackboard>(m, "ReceiverBlackboard").def_readonly("messages", &ReceiverBlackboard::messages);
+
+  py::class_<BehaviourBlackboard> behaviour(m, "BehaviourBlackboard");
+  copy_readonly(behaviour, "request", &BehaviourBlackboard::request);
+  behaviour.def_readonly("skill", &BehaviourBlackboard::skill);
+
+  py::class_<Blackboard>(m, "Blackboard", "the robot's Blackboard, read-only")
+      .def(py::init<>()) // empty boards, for tests of behaviour code
+      .def_readonly("utime", &Blackboard::utime)
+      .def_readonly("motion", &Blackboard::motion)
+      .def_readonly("localisation", &Blackboard::localisation)
+      .def_readonly("vision", &Blackboard::vision)
+      .def_readonly("gameController", &Blackboard::gameController)
+      .def_readonly("receiver", &Blackboard::receiver)
+      .def_readonly("behaviour", &Blackboard::behaviour);
+}
+
+} // namespace
+
+void define_robot_module(py::module_& m) {
+  m.doc() = "The robot API for behaviour code: Blackboard (read-only), ActionCommand types, constants. mm, rad.";
+  define_geometry(m);
+  define_action_command(m);
+  define_blackboard(m);
+}
+
+} // namespace touchline::python
