@@ -47,7 +47,9 @@ void write_summary_json(const std::string& path, const sim::Match& match, const 
     out << (i ? ",\n" : "\n") << "    {\"team\": " << r.truth.id.team << ", \"player\": " << r.truth.id.player
         << ", \"active\": " << (r.active ? "true" : "false")
         << ", \"frames_answered\": " << (m ? m->frames_answered : 0)
-        << ", \"frames_missed\": " << (m ? m->frames_missed : 0) << ", \"x_mm\": " << r.truth.body.x_mm
+        << ", \"frames_missed\": " << (m ? m->frames_missed : 0)
+        << ", \"behaviour_cpu_us_mean\": " << (m ? m->behaviour_cpu_us_mean() : 0)
+        << ", \"behaviour_cpu_us_max\": " << (m ? m->behaviour_cpu_us_max : 0) << ", \"x_mm\": " << r.truth.body.x_mm
         << ", \"y_mm\": " << r.truth.body.y_mm << ", \"theta_rad\": " << r.truth.body.theta_rad << "}";
   }
   out << "\n  ]\n}\n";

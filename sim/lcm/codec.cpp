@@ -1,10 +1,9 @@
 #include "touchline/lcm/codec.hpp"
 
+#include <chrono>
 #include <cmath>
 
 namespace touchline::transport {
-
-namespace {
 
 pose2d_t to_lcm(const Pose2D& p) {
   pose2d_t m;
@@ -13,6 +12,13 @@ pose2d_t to_lcm(const Pose2D& p) {
   m.theta_rad = p.theta_rad;
   return m;
 }
+
+int64_t wall_us() {
+  using namespace std::chrono;
+  return duration_cast<microseconds>(steady_clock::now().time_since_epoch()).count();
+}
+
+namespace {
 
 void check_finite(float value, const char* field, const std::string& what) {
   if (!std::isfinite(value)) throw MalformedMessage(what + ": " + field + " is not finite");
@@ -116,6 +122,7 @@ act_t to_lcm(const RobotAct& act, int64_t utime, int64_t instance) {
   m.action_type = static_cast<int8_t>(act.action_type);
   m.leds = act.leds;
   m.odometry = to_lcm(act.odometry);
+  m.behaviour_cpu_us = static_cast<int32_t>(act.behaviour_cpu_us);
   return m;
 }
 
@@ -140,6 +147,7 @@ RobotAct from_lcm(const act_t& m) {
   act.action_type = m.action_type;
   act.leds = m.leds;
   act.odometry = from_lcm(m.odometry, "odometry", what);
+  act.behaviour_cpu_us = m.behaviour_cpu_us;
   return act;
 }
 

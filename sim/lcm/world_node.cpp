@@ -1,7 +1,6 @@
 #include "touchline/lcm/world_node.hpp"
 
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -27,19 +26,6 @@ namespace {
 
 std::atomic<bool> g_stop{false};
 
-int64_t wall_us() {
-  using namespace std::chrono;
-  return duration_cast<microseconds>(steady_clock::now().time_since_epoch()).count();
-}
-
-pose2d_t to_msg(const Pose2D& p) {
-  pose2d_t m;
-  m.x_mm = p.x_mm;
-  m.y_mm = p.y_mm;
-  m.theta_rad = p.theta_rad;
-  return m;
-}
-
 world_truth_t to_msg(const sim::TruthFrame& truth) {
   world_truth_t m;
   m.utime = truth.utime;
@@ -54,9 +40,9 @@ world_truth_t to_msg(const sim::TruthFrame& truth) {
     t.team = static_cast<int8_t>(r.truth.id.team);
     t.player = static_cast<int8_t>(r.truth.id.player);
     t.active = r.active;
-    t.body = to_msg(r.truth.body);
-    t.left_foot = to_msg(r.truth.left_foot);
-    t.right_foot = to_msg(r.truth.right_foot);
+    t.body = to_lcm(r.truth.body);
+    t.left_foot = to_lcm(r.truth.left_foot);
+    t.right_foot = to_lcm(r.truth.right_foot);
     t.head_yaw_rad = r.head_yaw_rad;
     t.head_pitch_rad = r.head_pitch_rad;
     m.robots.push_back(t);
@@ -231,6 +217,8 @@ class WorldNode {
     msg.state = state;
     msg.frames_answered = member ? member->frames_answered : 0;
     msg.frames_missed = member ? member->frames_missed : 0;
+    msg.behaviour_cpu_us_mean = member ? static_cast<int32_t>(member->behaviour_cpu_us_mean()) : 0;
+    msg.behaviour_cpu_us_max = member ? static_cast<int32_t>(member->behaviour_cpu_us_max) : 0;
     msg.detail = detail;
     publish(lcm_, kStatusChannel, msg);
   }

@@ -1,5 +1,7 @@
 #include "touchline/sim/match.hpp"
 
+#include <algorithm>
+
 namespace touchline::sim {
 
 namespace {
@@ -67,6 +69,8 @@ ActOutcome Match::apply(const RobotAct& act, int64_t instance, bool accept_late)
   const bool rejoined = !member->active;
   member->active = true;
   ++member->frames_answered;
+  member->behaviour_cpu_us_sum += act.behaviour_cpu_us;
+  member->behaviour_cpu_us_max = std::max(member->behaviour_cpu_us_max, act.behaviour_cpu_us);
   for (int i = 0; i < act.motion_ticks && i < kMaxTicksPerFrame; ++i)
     robot->second.pending.push_back({act.left[i], act.right[i]});
   while (robot->second.pending.size() > kMaxPendingTicks) robot->second.pending.pop_front();

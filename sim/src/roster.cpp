@@ -14,7 +14,7 @@ JoinReply Roster::join(RobotId id, int64_t instance, int pid) {
                        std::to_string(team_size_) + " (players 1.." + std::to_string(team_size_) + ")"};
   auto it = members_.find(id);
   if (it == members_.end()) {
-    members_[id] = Member{instance, pid, true, 0, 0};
+    members_[id] = Member{instance, pid, true, 0, 0, 0, 0};
     return {true, ""};
   }
   Member& member = it->second;

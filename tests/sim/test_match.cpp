@@ -127,3 +127,18 @@ TEST(Match, FinishesAfterItsDuration) {
   }
   EXPECT_EQ(frames, 30);
 }
+
+TEST(Match, BehaviourCpuTimeIsAccumulatedPerRobot) {
+  sim::Match match(small_config());
+  match.join({0, 1}, 9, 0);
+  match.start();
+  for (int64_t cpu : {100, 300, 200}) {
+    RobotAct act = forward_act({0, 1}, match.frame(), match.sense().motion_ticks, 0.f);
+    act.behaviour_cpu_us = cpu;
+    match.apply(act, 9);
+    match.advance();
+  }
+  const sim::Member* member = match.roster().find({0, 1});
+  EXPECT_EQ(member->behaviour_cpu_us_mean(), 200);
+  EXPECT_EQ(member->behaviour_cpu_us_max, 300);
+}

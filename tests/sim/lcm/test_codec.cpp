@@ -31,6 +31,7 @@ RobotAct sample_act() {
   act.action_type = 2;
   act.leds = 0x123456;
   act.odometry = {10, 20, 0.5f};
+  act.behaviour_cpu_us = 1234;
   return act;
 }
 
@@ -53,6 +54,7 @@ TEST(Codec, ActSurvivesEncodeAndDecode) {
   }
   EXPECT_EQ(out.leds, in.leds);
   EXPECT_EQ(out.odometry.theta_rad, in.odometry.theta_rad);
+  EXPECT_EQ(out.behaviour_cpu_us, 1234);
 }
 
 TEST(Codec, SenseSurvivesEncodeAndDecode) {

@@ -92,6 +92,7 @@ struct RobotAct {
   int action_type = 0;      ///< robot API ActionType of the body action
   int32_t leds = 0;         ///< chest LED, 0xRRGGBB
   Pose2D odometry;          ///< the walk's dead-reckoned body pose (odometry frame)
+  int64_t behaviour_cpu_us = 0; ///< CPU time of this frame's behaviour tick (thread CPU clock)
 };
 
 } // namespace touchline

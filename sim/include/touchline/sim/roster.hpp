@@ -22,6 +22,9 @@ struct Member {
   bool active = true;        ///< answering frames; false after a timeout
   int64_t frames_answered = 0;
   int64_t frames_missed = 0;
+  int64_t behaviour_cpu_us_sum = 0; ///< over answered frames
+  int64_t behaviour_cpu_us_max = 0;
+  int64_t behaviour_cpu_us_mean() const { return frames_answered ? behaviour_cpu_us_sum / frames_answered : 0; }
 };
 
 class Roster {

@@ -39,11 +39,15 @@ void decode(const void* data, int size, const std::string& channel, Msg& msg) {
                            " (wrong type or corrupt, " + std::to_string(size) + " bytes)");
 }
 
+pose2d_t to_lcm(const Pose2D& pose);
 sense_t to_lcm(const SenseFrame& frame);
 SenseFrame from_lcm(const sense_t& msg); ///< throws MalformedMessage
 
 act_t to_lcm(const RobotAct& act, int64_t utime, int64_t instance);
 RobotAct from_lcm(const act_t& msg); ///< throws MalformedMessage
+
+/// Wall-clock microseconds (steady), for the adapters' timeouts; robot code never sees it.
+int64_t wall_us();
 
 /// Checks team 0..1 and player 1..kMaxTeamSize. Throws MalformedMessage.
 void check_id(int team, int player, const std::string& what);

@@ -1,0 +1,87 @@
+#include "touchline/lcm/snapshot.hpp"
+
+#include <vector>
+
+#include <gtest/gtest.h>
+
+using namespace touchline;
+namespace AC = api::ActionCommand;
+
+namespace {
+
+api::Blackboard sample() {
+  api::Blackboard bb;
+  bb.utime = 1233330;
+  bb.behaviour.skill = "GoToBall";
+  bb.motion.odometry = {12, -34, 0.5f};
+  bb.motion.active = AC::walk(200, -50, 0.25f);
+  bb.motion.headYaw = 0.3f;
+  bb.motion.headPitch = 0.1f;
+  bb.motion.standing = false;
+  bb.motion.ticks = 3700;
+  bb.localisation.robotPos = {-1000, 500, 1.5f};
+  bb.localisation.ballPos = {200, 100, 0};
+  bb.localisation.ballPosRR = {1250, -0.75f};
+  bb.localisation.ballLostCount = 4;
+  bb.localisation.teamBallPos = {210, 90, 0};
+  bb.vision.ballSeen = true;
+  bb.vision.ball = {1240, -0.7f};
+  bb.vision.frame = 37;
+  bb.gameController.state = api::GameState::PLAYING;
+  bb.gameController.team = 1;
+  bb.gameController.playerNumber = 3;
+  bb.gameController.penalised = true;
+  bb.gameController.score = {{2, 1}};
+  bb.gameController.secsRemaining = 412;
+  bb.behaviour.request.head.yaw = -0.4f;
+  bb.behaviour.request.head.isRelative = true;
+  bb.behaviour.request.body.actionType = AC::ActionType::KICK;
+  bb.behaviour.request.body.foot = AC::Foot::RIGHT;
+  bb.behaviour.request.body.power = 0.8f;
+  bb.behaviour.request.leds.chest = 0x0000ff;
+  return bb;
+}
+
+} // namespace
+
+TEST(Snapshot, BlackboardSurvivesEncodeAndDecode) {
+  const api::Blackboard in = sample();
+  const blackboard_snapshot_t msg = transport::to_snapshot(in, {1, 3}, 37);
+  std::vector<uint8_t> bytes(static_cast<size_t>(msg.getEncodedSize()));
+  msg.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  blackboard_snapshot_t decoded;
+  ASSERT_GT(decoded.decode(bytes.data(), 0, static_cast<int>(bytes.size())), 0);
+  EXPECT_EQ(decoded.frame, 37);
+  EXPECT_EQ(decoded.team, 1);
+  const api::Blackboard out = transport::from_snapshot(decoded);
+
+  EXPECT_EQ(out.utime, in.utime);
+  EXPECT_EQ(out.behaviour.skill, "GoToBall");
+  EXPECT_EQ(out.motion.odometry.theta, in.motion.odometry.theta);
+  EXPECT_EQ(out.motion.active.actionType, AC::ActionType::WALK);
+  EXPECT_EQ(out.motion.active.left, -50);
+  EXPECT_EQ(out.motion.ticks, 3700);
+  EXPECT_FALSE(out.motion.standing);
+  EXPECT_EQ(out.localisation.robotPos.y, 500);
+  EXPECT_EQ(out.localisation.ballPosRR.heading, -0.75f);
+  EXPECT_EQ(out.localisation.ballLostCount, 4);
+  EXPECT_EQ(out.localisation.teamBallPos.x, 210);
+  EXPECT_TRUE(out.vision.ballSeen);
+  EXPECT_EQ(out.vision.ball.distance, 1240);
+  EXPECT_EQ(out.vision.frame, 37);
+  EXPECT_EQ(out.gameController.state, api::GameState::PLAYING);
+  EXPECT_EQ(out.gameController.playerNumber, 3);
+  EXPECT_TRUE(out.gameController.penalised);
+  EXPECT_EQ(out.gameController.score[0], 2);
+  EXPECT_EQ(out.gameController.secsRemaining, 412);
+  EXPECT_EQ(out.behaviour.request.head.yaw, -0.4f);
+  EXPECT_TRUE(out.behaviour.request.head.isRelative);
+  EXPECT_EQ(out.behaviour.request.body.actionType, AC::ActionType::KICK);
+  EXPECT_EQ(out.behaviour.request.body.foot, AC::Foot::RIGHT);
+  EXPECT_EQ(out.behaviour.request.body.power, 0.8f);
+  EXPECT_EQ(out.behaviour.request.leds.chest, 0x0000ff);
+}
+
+TEST(Snapshot, ChannelNamesTheRobot) {
+  EXPECT_EQ(transport::snapshot_channel({0, 4}), "TL_BLACKBOARD_0_4");
+}
