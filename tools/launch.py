@@ -3,12 +3,14 @@
 for them, shuts everything down cleanly on Ctrl-C or when any process fails (naming which
 and why), and prints what happened.
 
+Every match is recorded to an LCM event log (lcm-logger format) named by date and seed.
 Until the behaviour runtime lands, every robot runs the C++ `goto` behaviour towards its
 kick-off position, so robots walk on for a purpose.
 """
 from __future__ import annotations
 
 import argparse
+import datetime
 import json
 import os
 import signal
@@ -17,6 +19,8 @@ import sys
 import tempfile
 import time
 from pathlib import Path
+
+from match_watch import MatchWatch
 
 ROOT = Path(__file__).resolve().parents[1]
 DEFAULT_BUILD = ROOT / "build"
@@ -40,7 +44,10 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     p.add_argument("--lcm-url", default="udpm://239.255.76.67:7667?ttl=0")
     p.add_argument("--host-network", action="store_true",
                    help="use this machine's network instead of a private namespace (to watch in lcm-spy)")
-    p.add_argument("--json", type=Path, help="also write the world's summary here")
+    p.add_argument("--json", type=Path, help="also write the match summary here as JSON")
+    p.add_argument("--log-dir", type=Path, default=ROOT / "logs", help="where match logs go (default logs/)")
+    p.add_argument("--no-log", action="store_true", help="do not record an LCM event log")
+    p.add_argument("--no-progress", action="store_true", help="no progress bar (it shows only on a terminal)")
     args = p.parse_args(argv)
     if not 1 <= args.team_size <= 7:
         p.error("--team-size must be 1..7")
@@ -72,13 +79,13 @@ class Launcher:
     def __init__(self, args: argparse.Namespace):
         self.args = args
         self.procs: list[tuple[str, subprocess.Popen, Path]] = []
+        self.interrupted = False
         self.logdir = Path(tempfile.mkdtemp(prefix="touchline-"))
 
     def start(self, name: str, argv: list) -> None:
         log = self.logdir / (name.replace(" ", "_").replace("/", "-") + ".log")
         with open(log, "w") as out:
-            proc = subprocess.Popen([str(a) for a in argv], stdout=out if name != "sim_world" else subprocess.PIPE,
-                                    stderr=out, text=True, start_new_session=True)
+            proc = subprocess.Popen([str(a) for a in argv], stdout=out, stderr=out, start_new_session=True)
         self.procs.append((name, proc, log))
 
     def stop_all(self) -> None:
@@ -103,56 +110,89 @@ class Launcher:
 
     def run(self) -> int:
         a = self.args
+        for sig in (signal.SIGINT, signal.SIGTERM):  # stop cleanly wherever the signal lands
+            signal.signal(sig, lambda *_: setattr(self, "interrupted", True))
         bin_world = a.build_dir / "sim" / "sim_world"
         bin_shim = a.build_dir / "robot_shim" / "robot_shim"
         for b in (bin_world, bin_shim):
             if not b.exists():
                 print(f"launch: {b} not found; build first (tools/setup)", file=sys.stderr)
                 return 2
-        summary_path = a.json or (self.logdir / "summary.json")
+        sys.path.insert(0, str(a.build_dir / "lcm_types" / "gen" / "python"))
+        log = None
+        if not a.no_log:
+            stamp = datetime.datetime.now().strftime("%Y-%m-%d_%H%M%S")
+            log = a.log_dir / f"{stamp}_seed{a.seed}.lcmlog"
+            log.parent.mkdir(parents=True, exist_ok=True)
+        watch = MatchWatch(a.lcm_url, a.duration, show_bar=sys.stdout.isatty() and not a.no_progress)
+        try:
+            rc = self.play(bin_world, bin_shim, watch, log)
+        finally:
+            watch.stop()
+            self.stop_all()
+        if log and log.exists():
+            print(f"launch: match log {log} ({log.stat().st_size / 1e6:.1f} MB)")
+        return rc
+
+    def play(self, bin_world: Path, bin_shim: Path, watch: MatchWatch, log: Path | None) -> int:
+        a = self.args
+        summary_path = self.logdir / "summary.json"
         targets = kickoff_targets(a.team_size, *field_half_sizes(a.config))
         self.start("sim_world", [bin_world, "--config", a.config, "--set", f"match.team_size={a.team_size}",
                                  "--duration", a.duration, "--mode", a.mode, "--speed", a.speed, "--seed", a.seed,
-                                 "--lcm-url", a.lcm_url, "--summary", summary_path])
+                                 "--lcm-url", a.lcm_url, "--summary", summary_path, "--quiet",
+                                 *(["--log", log] if log else [])])
         for team, player, x, y, theta in targets:
             self.start(f"robot_shim {team}/{player}",
                        [bin_shim, "--team", team, "--player", player, "--walk-config", a.walk_config,
                         "--lcm-url", a.lcm_url, "--behaviour", "goto", "--param", f"x={x:.0f}",
                         "--param", f"y={y:.0f}", "--param", f"theta={theta:.3f}"])
-        print(f"launch: {2 * a.team_size} robots, {a.duration:.0f} s simulated, {a.mode} mode, seed {a.seed}")
+        print(f"launch: {2 * a.team_size} robots, {a.duration:.0f} s simulated, {a.mode} mode, seed {a.seed}",
+              flush=True)
         world = self.procs[0][1]
-        try:
-            while world.poll() is None:
-                why = self.failure()
-                if why:
-                    print(f"launch: stopping the match: {why}", file=sys.stderr)
-                    self.stop_all()
-                    return 1
-                time.sleep(0.1)  # polling child exit codes, not hiding a race
-        except KeyboardInterrupt:
-            print("launch: interrupted, stopping every process", file=sys.stderr)
-            self.stop_all()
-            return 130
-        out = world.stdout.read()
+        while world.poll() is None:
+            if self.interrupted:
+                print("launch: interrupted, stopping every process", file=sys.stderr)
+                return 130
+            why = self.failure()
+            if why:
+                print(f"launch: stopping the match: {why}", file=sys.stderr)
+                return 1
+            time.sleep(0.1)  # polling child exit codes, not hiding a race
+        for _, proc, _ in self.procs:  # the shims end when the world says FINISHED
+            proc.wait(timeout=30)
         why = self.failure()
-        self.stop_all()
         if why:
             print(f"launch: {why}", file=sys.stderr)
             return 1
-        print(out, end="")
-        self.report(json.loads(Path(summary_path).read_text()), targets)
+        summary = json.loads(summary_path.read_text())
+        summary["events"] = [{"sim_s": t, "what": line} for t, line in watch.events]
+        summary["score"] = list(watch.score)
+        self.report(summary, targets)
+        if a.json:
+            a.json.write_text(json.dumps(summary, indent=2) + "\n")
         return 0
 
-    @staticmethod
-    def report(summary: dict, targets: list) -> None:
-        print("  where each robot ended, against its kick-off position:")
+    def report(self, summary: dict, targets: list) -> None:
+        a = self.args
+        print(f"Match: {summary['sim_s']:.0f} s simulated in {summary['wall_s']:.1f} s (x{summary['rtf']:.1f} real time), "
+              f"{a.mode} mode, seed {a.seed}, score {summary['score'][0]}:{summary['score'][1]}, "
+              f"truth hash {summary['truth_hash']}")
+        print(f"{'robot':<14}{'answered':>9}{'missed':>8}{'behaviour CPU µs':>19}   {'ended at (mm)':<18}{'kick-off spot off by':>21}")
         for team, player, x, y, _ in targets:
             r = next((r for r in summary["robots"] if r["team"] == team and r["player"] == player), None)
+            name = f"team {team} #{player}"
             if r is None:
-                print(f"    team {team} player {player}: never joined")
+                print(f"{name:<14}  never joined")
                 continue
             err = ((r["x_mm"] - x) ** 2 + (r["y_mm"] - y) ** 2) ** 0.5
-            print(f"    team {team} player {player}: target ({x:6.0f}, {y:6.0f}) mm, off by {err:5.0f} mm")
+            cpu = f"{r['behaviour_cpu_us_mean']} mean {r['behaviour_cpu_us_max']} max"
+            where = f"({r['x_mm']:.0f}, {r['y_mm']:.0f})"
+            print(f"{name:<14}{r['frames_answered']:>9}{r['frames_missed']:>8}{cpu:>19}   {where:<18}{err:>18.0f} mm")
+        for event in summary["events"]:
+            print(f"  at {event['sim_s']:6.1f} s: {event['what']}")
+        if summary["malformed"] or summary["stale"]:
+            print(f"  malformed messages ignored: {summary['malformed']}, late answers dropped: {summary['stale']}")
 
 
 def main(argv: list[str]) -> int:

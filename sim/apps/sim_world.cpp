@@ -96,6 +96,7 @@ int main(int argc, char** argv) {
     ("seed", po::value(&seed)->default_value(seed), "random seed (recorded; the world has no random model yet)")
     ("lcm-url", po::value(&node.lcm_url)->default_value(node.lcm_url), "LCM provider URL")
     ("summary", po::value(&node.summary_path), "write a JSON summary of the match to this path")
+    ("log", po::value(&node.log_path), "record every message of the match to this LCM event log (lcm-logger format; timestamps are simulated time)")
     ("quiet", "no progress lines");
 
   sim::WorldConfig config;

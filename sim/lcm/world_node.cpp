@@ -16,6 +16,7 @@
 #include "touchline/hash.hpp"
 #include "touchline/join_reply_t.hpp"
 #include "touchline/join_t.hpp"
+#include "touchline/lcm/match_recorder.hpp"
 #include "touchline/robot_status_t.hpp"
 #include "touchline/sim/lockstep.hpp"
 #include "touchline/world_truth_t.hpp"
@@ -50,15 +51,6 @@ world_truth_t to_msg(const sim::TruthFrame& truth) {
   return m;
 }
 
-/// Publishes with a pre-sized buffer, returning the encoded bytes (for the truth hash).
-template <typename Msg>
-std::vector<uint8_t> publish(::lcm::LCM& lcm, const char* channel, const Msg& msg) {
-  std::vector<uint8_t> buffer(static_cast<size_t>(msg.getEncodedSize()));
-  msg.encode(buffer.data(), 0, static_cast<int>(buffer.size()));
-  lcm.publish(channel, buffer.data(), static_cast<unsigned>(buffer.size()));
-  return buffer;
-}
-
 class WorldNode {
  public:
   WorldNode(sim::Match& match, const WorldNodeDef& def, std::ostream& log)
@@ -68,6 +60,10 @@ class WorldNode {
                                " (is a multicast route on lo? see README, Networking)");
     lcm_.subscribe(kJoinChannel, &WorldNode::on_join, this);
     lcm_.subscribe(kActChannelPattern, &WorldNode::on_act, this);
+    if (!def.log_path.empty()) {
+      recorder_ = std::make_unique<MatchRecorder>(def.log_path);
+      lcm_.subscribe(kSnapshotChannelPattern, &WorldNode::on_snapshot, this);
+    }
   }
 
   RunSummary run() {
@@ -101,11 +97,12 @@ class WorldNode {
   }
 
   void run_frame(int64_t start_us) {
-    publish(lcm_, kSenseChannel, to_lcm(match_.sense()));
+    publish(kSenseChannel, to_lcm(match_.sense()));
     if (def_.pacing != Pacing::kFree) wait_for_answers();
     if (def_.pacing != Pacing::kLockstep) pace(start_us);
     match_.advance();
-    const auto bytes = publish(lcm_, kTruthChannel, to_msg(match_.truth()));
+    const auto bytes = publish(kTruthChannel, to_msg(match_.truth()));
+    if (recorder_ && !recorder_->error().empty()) throw std::runtime_error(recorder_->error());
     truth_hash_.add(bytes.data(), bytes.size());
     summary_.truth_hash = truth_hash_.value();
     if (match_.frame() % kFramesPerSecond == 0) {
@@ -143,7 +140,24 @@ class WorldNode {
       lcm_.handleTimeout(static_cast<int>(std::max<int64_t>(1, (due - now) / 1000)));
   }
 
+  /// Publishes with a pre-sized buffer and records it; returns the encoded bytes.
+  template <typename Msg>
+  std::vector<uint8_t> publish(const char* channel, const Msg& msg) {
+    std::vector<uint8_t> buffer(static_cast<size_t>(msg.getEncodedSize()));
+    msg.encode(buffer.data(), 0, static_cast<int>(buffer.size()));
+    lcm_.publish(channel, buffer.data(), static_cast<unsigned>(buffer.size()));
+    if (recorder_) recorder_->record(channel, buffer.data(), static_cast<int>(buffer.size()), match_.utime());
+    return buffer;
+  }
+
+  void record(const ::lcm::ReceiveBuffer* buffer, const std::string& channel) {
+    if (recorder_) recorder_->record(channel, buffer->data, static_cast<int>(buffer->data_size), match_.utime());
+  }
+
+  void on_snapshot(const ::lcm::ReceiveBuffer* buffer, const std::string& channel) { record(buffer, channel); }
+
   void on_join(const ::lcm::ReceiveBuffer* buffer, const std::string& channel) {
+    record(buffer, channel);
     join_t msg;
     try {
       decode(buffer->data, static_cast<int>(buffer->data_size), channel, msg);
@@ -160,7 +174,7 @@ class WorldNode {
     out.instance = msg.instance;
     out.accepted = reply.accepted;
     out.reason = reply.reason;
-    publish(lcm_, kJoinReplyChannel, out);
+    publish(kJoinReplyChannel, out);
     if (!reply.accepted) {
       if (rejected_.insert(msg.instance).second)
         log_ << "sim_world: refused a robot_shim (pid " << msg.pid << "): " << reply.reason << "\n" << std::flush;
@@ -170,6 +184,7 @@ class WorldNode {
   }
 
   void on_act(const ::lcm::ReceiveBuffer* buffer, const std::string& channel) {
+    record(buffer, channel);
     act_t msg;
     RobotAct act;
     try {
@@ -220,7 +235,7 @@ class WorldNode {
     msg.behaviour_cpu_us_mean = member ? static_cast<int32_t>(member->behaviour_cpu_us_mean()) : 0;
     msg.behaviour_cpu_us_max = member ? static_cast<int32_t>(member->behaviour_cpu_us_max) : 0;
     msg.detail = detail;
-    publish(lcm_, kStatusChannel, msg);
+    publish(kStatusChannel, msg);
   }
 
   void publish_status_all(const std::string& detail) {
@@ -237,7 +252,7 @@ class WorldNode {
     msg.first_half = 1;
     msg.kickoff_team = 0;
     msg.score[0] = msg.score[1] = 0;
-    publish(lcm_, kGameChannel, msg);
+    publish(kGameChannel, msg);
   }
 
   static constexpr int kFramesPerSecond = 30;
@@ -248,6 +263,7 @@ class WorldNode {
   std::ostream& log_;
   ::lcm::LCM lcm_;
   sim::FrameBarrier barrier_;
+  std::unique_ptr<MatchRecorder> recorder_;
   Fnv1a truth_hash_;
   RunSummary summary_;
   std::set<int64_t> joined_, rejected_, unknown_;

@@ -22,6 +22,7 @@ constexpr const char* kStatusChannel = "TL_STATUS";
 constexpr const char* kJoinChannel = "TL_JOIN";
 constexpr const char* kJoinReplyChannel = "TL_JOIN_REPLY";
 constexpr const char* kActChannelPattern = "TL_ACT_.*";
+constexpr const char* kSnapshotChannelPattern = "TL_BLACKBOARD_.*";
 /// "TL_ACT_<team>_<player>"
 std::string act_channel(RobotId id);
 

@@ -26,6 +26,7 @@ struct WorldNodeDef {
   int robots = 8;                ///< joins to wait for before kick-off
   double join_timeout_s = 30;    ///< wall time to wait for them
   std::string summary_path;      ///< write a JSON summary here at the end (empty: none)
+  std::string log_path;          ///< record every message to this LCM event log (empty: none)
   bool progress = true;          ///< print a line per simulated 10 s
 };
 

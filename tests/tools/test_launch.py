@@ -1,0 +1,65 @@
+"""The launcher: plays a match, records every message, and stops cleanly on failure or Ctrl-C."""
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import lcm
+
+ROOT = Path(__file__).resolve().parents[2]
+BUILD = Path(os.environ.get("TOUCHLINE_BUILD_DIR", ROOT / "build"))
+LAUNCH = [sys.executable, str(ROOT / "tools" / "launch.py"), "--build-dir", str(BUILD)]
+
+
+
+def launch(*args, **kwargs):
+    return subprocess.run([*LAUNCH, *map(str, args)], capture_output=True, text=True, timeout=120, **kwargs)
+
+
+def test_match_is_summarised_and_every_truth_frame_is_in_the_log(tmp_path):
+    result = launch("--team-size", 2, "--duration", 4, "--log-dir", tmp_path, "--json", tmp_path / "m.json")
+    assert result.returncode == 0, result.stderr
+    summary = json.loads((tmp_path / "m.json").read_text())
+    assert summary["frames"] == 120 and len(summary["robots"]) == 4
+    assert all(r["frames_answered"] == 120 for r in summary["robots"])
+    assert "team 1 #2" in result.stdout and "truth hash" in result.stdout
+    logs = list(tmp_path.glob("*_seed1.lcmlog"))
+    assert len(logs) == 1
+    truth_frames = [e for e in lcm.EventLog(str(logs[0]), "r") if e.channel == "TL_TRUTH"]
+    assert len(truth_frames) == summary["frames"], "the log lost truth frames"
+    acts = [e for e in lcm.EventLog(str(logs[0]), "r") if e.channel.startswith("TL_ACT_")]
+    assert len(acts) == 4 * summary["frames"], "the log lost answers"
+
+
+def test_a_failing_robot_stops_the_match_and_is_named(tmp_path):
+    bad_walk = tmp_path / "walk.ini"
+    bad_walk.write_text("[walk]\nperiod_s = -1\n")
+    result = launch("--team-size", 1, "--duration", 5, "--walk-config", bad_walk, "--no-log")
+    assert result.returncode == 1
+    line = result.stderr.strip().splitlines()[-1]
+    assert "robot_shim" in line and "exited with code 2" in line and "period_s" in line, result.stderr
+
+
+def test_ctrl_c_stops_every_process(tmp_path):
+    proc = subprocess.Popen([*LAUNCH, "--team-size", "1", "--duration", "100000", "--mode", "realtime",
+                             "--no-log"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            start_new_session=True)
+    assert "robots" in proc.stdout.readline()  # printed once every process is started
+    children = [int(p) for p in subprocess.run(["pgrep", "-P", str(proc.pid)], capture_output=True,
+                                               text=True).stdout.split()]
+    assert len(children) == 3, "sim_world and two robot_shims"
+    os.killpg(proc.pid, signal.SIGINT)
+    _, err = proc.communicate(timeout=30)
+    assert proc.returncode == 130, err
+    assert "interrupted, stopping every process" in err
+    for pid in children:
+        assert not Path(f"/proc/{pid}").exists(), f"process {pid} left running"
+
+
+def test_bad_options_are_one_line(tmp_path):
+    result = launch("--team-size", 9)
+    assert result.returncode == 2
+    assert "--team-size must be 1..7" in result.stderr
