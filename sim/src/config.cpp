@@ -45,7 +45,9 @@ void bind(IniSchema& s, PhysicsDef& d) {
 void bind(IniSchema& s, MatchDef& d) {
   s.bind("match.team_size", &d.team_size, "robots per team, 1..7")
       .bind("match.duration_s", &d.duration_s, "simulated match length, s")
-      .bind("match.foot_separation_mm", &d.foot_separation_mm, "feet apart when placed, mm");
+      .bind("match.foot_separation_mm", &d.foot_separation_mm, "feet apart when placed, mm")
+      .bind("match.ball_start_x_mm", &d.ball_start_x_mm, "ball position at kick-off, x, mm")
+      .bind("match.ball_start_y_mm", &d.ball_start_y_mm, "ball position at kick-off, y, mm");
 }
 
 namespace {
@@ -143,6 +145,10 @@ void validate(const WorldConfig& config) {
   validate_field(config.field);
   validate_physics(config.physics);
   validate_match(config.match);
+  const Field field(config.field);
+  if (!field.on_carpet(config.match.ball_start_x_mm, config.match.ball_start_y_mm))
+    throw ConfigError("match.ball_start_x_mm/_y_mm must be on the carpet (got " +
+                      str(config.match.ball_start_x_mm) + ", " + str(config.match.ball_start_y_mm) + ")");
 }
 
 WorldConfig load_world_config(const std::string& path, const std::vector<std::string>& overrides) {

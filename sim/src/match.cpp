@@ -29,7 +29,7 @@ void Match::place(RobotId id) {
 
 void Match::start() {
   for (const auto& [id, member] : roster_.members()) place(id); // std::map: (team, player) order
-  world_.place_ball(0, 0);
+  world_.place_ball(config_.match.ball_start_x_mm, config_.match.ball_start_y_mm);
   started_ = true;
 }
 

@@ -142,3 +142,13 @@ TEST(Match, BehaviourCpuTimeIsAccumulatedPerRobot) {
   EXPECT_EQ(member->behaviour_cpu_us_mean(), 200);
   EXPECT_EQ(member->behaviour_cpu_us_max, 300);
 }
+
+TEST(Match, BallStartsWhereTheConfigSays) {
+  sim::WorldConfig config = small_config();
+  config.match.ball_start_x_mm = 1200;
+  config.match.ball_start_y_mm = -400;
+  sim::Match match(config);
+  match.start();
+  EXPECT_FLOAT_EQ(match.world().ball().x_mm, 1200);
+  EXPECT_FLOAT_EQ(match.world().ball().y_mm, -400);
+}
