@@ -253,15 +253,15 @@ TEST(InitialPose, KeeperIsNearestItsOwnGoalAndTeamsMirror) {
 }
 
 } // namespace
-} // namespace touchline::sim
-
 TEST(Config, BallStartOffTheCarpetIsAnError) {
   try {
-    sim::load_world_config("", {"match.ball_start_x_mm=5000"});
+    load_world_config("", {"match.ball_start_x_mm=5000"});
     FAIL() << "accepted a ball outside the walls";
   } catch (const ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("match.ball_start_x_mm/_y_mm must be on the carpet"), std::string::npos)
         << e.what();
   }
-  EXPECT_NO_THROW(sim::load_world_config("", {"match.ball_start_x_mm=3200"})); // on the border carpet
+  EXPECT_NO_THROW(load_world_config("", {"match.ball_start_x_mm=3200"})); // on the border carpet
 }
+
+} // namespace touchline::sim
