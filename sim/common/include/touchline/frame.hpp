@@ -57,12 +57,47 @@ constexpr int64_t frame_start_utime(int64_t frame) {
 /// Game states, as the GameController sends them.
 enum class GameState : int8_t { kInitial = 0, kReady = 1, kSet = 2, kPlaying = 3, kFinished = 4 };
 
+/// What the camera can report. Landmark ids: goal posts 0..3 (team 0's goal left, right
+/// as seen from the field centre, then team 1's), field corners 0..3 (counter-clockwise
+/// from (-x, -y)), centre-line ends 0 (-y) and 1 (+y), penalty marks 0 (team 0's) and 1.
+enum class ObjectKind : int8_t {
+  kBall = 0,
+  kGoalPost = 1,
+  kFieldCorner = 2,
+  kCentreLineEnd = 3,
+  kPenaltyMark = 4,
+  kTeammate = 5,
+  kOpponent = 6,
+};
+
+/// One thing the camera saw this frame, in the robot's frame (after noise).
+struct Observation {
+  ObjectKind kind = ObjectKind::kBall;
+  int id = 0;             ///< which landmark (see ObjectKind); player number for robots
+  float distance_mm = 0;  ///< from the body centre
+  float heading_rad = 0;  ///< from the body heading, + left
+  float image_x = 0;      ///< Algorithm 2.3's image coordinate, 0..1 across the view
+};
+
+/// The referee's view of the game, as the GameController sends it.
+struct GameInfo {
+  GameState state = GameState::kPlaying;
+  int secs_remaining = 0;          ///< of the current half
+  bool first_half = true;
+  int kickoff_team = 0;
+  std::array<int, 2> score{{0, 0}};
+};
+
 /// What one robot senses at the start of a frame.
 struct RobotSense {
   RobotId id;
   bool active = true; ///< false while the world treats the robot as crashed
   Pose2D truth;       ///< ground-truth body pose, field frame
   float ball_x_mm = 0, ball_y_mm = 0; ///< ground-truth ball, field frame
+  std::vector<Observation> seen;      ///< the camera's observations this frame
+  float sonar_left = 1, sonar_right = 1; ///< nearest obstacle, fraction of the sonar range (1: none)
+  bool penalised = false;             ///< off the field, serving a penalty
+  bool fallen = false;                ///< lying on the ground (getting up takes time)
 };
 
 /// World -> robots, once per camera frame.
