@@ -62,8 +62,13 @@ TEST(Codec, SenseSurvivesEncodeAndDecode) {
   in.utime = frame_start_utime(5);
   in.frame = 5;
   in.motion_ticks = ticks_in_frame(5);
-  in.robots.push_back({{0, 1}, true, {-100, 200, 1.f}, 5, 6});
-  in.robots.push_back({{1, 4}, false, {300, -200, -2.f}, 5, 6});
+  RobotSense first, second;
+  first.id = {0, 1};
+  first.truth = {-100, 200, 1.f};
+  second.id = {1, 4};
+  second.active = false;
+  second.truth = {300, -200, -2.f};
+  in.robots = {first, second};
   const auto bytes = encode(transport::to_lcm(in));
   sense_t msg;
   transport::decode(bytes.data(), static_cast<int>(bytes.size()), "TL_SENSE", msg);
