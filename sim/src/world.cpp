@@ -52,8 +52,20 @@ b2PolygonShape skinned_box(b2Vec2 half, b2Vec2 centre = b2Vec2(0, 0)) {
 
 /// Box2D mixes restitution as the max of the pair, which would make the ball bounce off
 /// a soft net as hard as off a foot. A static part's own restitution decides instead.
-class StaticRestitution : public b2ContactListener {
+/// Also notes which robot's foot touched the ball last (the referee's ball-out rule).
+class ContactRules : public b2ContactListener {
  public:
+  const b2Body* ball = nullptr;
+  int last_touch_robot = -1; ///< robot index, -1: none yet
+
+  void BeginContact(b2Contact* contact) override {
+    const b2Fixture* a = contact->GetFixtureA();
+    const b2Fixture* b = contact->GetFixtureB();
+    const b2Fixture* other = a->GetBody() == ball ? b : b->GetBody() == ball ? a : nullptr;
+    // Feet carry their robot in a negative group index (see add_foot).
+    if (other && other->GetFilterData().groupIndex < 0) last_touch_robot = -other->GetFilterData().groupIndex - 1;
+  }
+
   void PreSolve(b2Contact* contact, const b2Manifold*) override {
     const b2Fixture* a = contact->GetFixtureA();
     const b2Fixture* b = contact->GetFixtureB();
@@ -77,7 +89,7 @@ struct World::Impl {
   PhysicsDef physics;
   float foot_separation_mm;
   b2World world{b2Vec2(0, 0)}; // top-down: no gravity
-  StaticRestitution restitution_rule;
+  ContactRules contact_rules;
   b2Body* ball = nullptr;
   std::vector<Robot> robots;
   std::vector<b2Body*> dynamic_bodies; // creation order, for state_hash
@@ -85,12 +97,13 @@ struct World::Impl {
 
   Impl(const FieldDef& field_def, const PhysicsDef& physics_def, float separation_mm)
       : field(field_def), physics(physics_def), foot_separation_mm(separation_mm) {
-    world.SetContactListener(&restitution_rule);
+    world.SetContactListener(&contact_rules);
     world.SetAllowSleeping(false); // a resting foot or ball must answer the next command at once
     add_walls();
     add_goal(0);
     add_goal(1);
     add_ball();
+    contact_rules.ball = ball;
   }
 
   b2FixtureDef fixture(const b2Shape& shape, float restitution) const {
@@ -301,6 +314,8 @@ void World::place_ball(float x_mm, float y_mm, float vx_mm_s, float vy_mm_s) {
 void World::step(const std::vector<TickMotion>& motions) { impl_->step(motions); }
 
 int World::robot_count() const { return static_cast<int>(impl_->robots.size()); }
+
+int World::last_ball_touch() const { return impl_->contact_rules.last_touch_robot; }
 
 RobotTruth World::robot(int index) const {
   const Impl::Robot& r = impl_->robot_at(index);

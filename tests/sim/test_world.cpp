@@ -275,6 +275,24 @@ TEST(World, AMovingFootKicksTheBall) {
   EXPECT_NEAR(world.ball().y_mm, r.left_foot.y_mm, 5);
 }
 
+TEST(World, RemembersWhichRobotTouchedTheBallLast) {
+  World world(FieldDef{}, PhysicsDef{});
+  world.add_robot(kRed1, Pose2D{-500, 0, 0});
+  world.add_robot(kBlue1, Pose2D{1500, 1000, kPi});
+  EXPECT_EQ(world.last_ball_touch(), -1);
+  const float ball_x = world.robot(0).left_foot.x_mm + world.physics().foot_length_mm / 2 + 40;
+  world.place_ball(ball_x, world.robot(0).left_foot.y_mm);
+  TickMotion swing;
+  swing.left.dx_mm = 15;
+  for (int t = 0; t < 6; ++t) world.step({swing, TickMotion{}});
+  EXPECT_EQ(world.last_ball_touch(), 0);
+  // Now roll it into the other robot's foot.
+  const RobotTruth blue = world.robot(1);
+  world.place_ball(blue.right_foot.x_mm - 300, blue.right_foot.y_mm, 2000, 0);
+  run(world, 30);
+  EXPECT_EQ(world.last_ball_touch(), 1);
+}
+
 class StandingFoot : public ::testing::TestWithParam<int> {};
 
 TEST_P(StandingFoot, YieldsOnlyForTheSubstepOfTheHitAndStaysPut) {

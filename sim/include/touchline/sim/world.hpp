@@ -80,6 +80,8 @@ class World {
   void step(const std::vector<TickMotion>& motions);
 
   int robot_count() const;
+  /// Index of the robot whose foot touched the ball last, -1 if none has.
+  int last_ball_touch() const;
   RobotTruth robot(int index) const; ///< std::out_of_range for a bad index
   BallTruth ball() const;
   const Field& field() const;
