@@ -4,7 +4,16 @@
 #include <cstdlib>
 #include <functional>
 #include <set>
+#include <utility>
 
+#include "touchline/behaviour/skills/go_to_ball.hpp"
+#include "touchline/behaviour/skills/go_to_pose.hpp"
+#include "touchline/behaviour/skills/head_scan.hpp"
+#include "touchline/behaviour/skills/line_up_and_kick.hpp"
+#include "touchline/behaviour/skills/look_for_ball.hpp"
+#include "touchline/behaviour/skills/skill_behaviour.hpp"
+#include "touchline/behaviour/skills/stand.hpp"
+#include "touchline/behaviour/skills/track_ball.hpp"
 #include "touchline/behaviour/walk_skills.hpp"
 
 namespace touchline::behaviour {
@@ -27,6 +36,9 @@ class ParamReader {
     return value;
   }
 
+  /// A number read as a switch: nonzero is on (as behaviour.py's ParamReader.flag).
+  bool flag(const std::string& key) { return number(key, 0) != 0; }
+
   void reject_unknown() const {
     for (const auto& [key, value] : params_)
       if (!known_.count(key)) throw BehaviourError(behaviour_ + ": unknown parameter '" + key + "'");
@@ -37,6 +49,12 @@ class ParamReader {
   const Params& params_;
   std::set<std::string> known_;
 };
+
+/// A skill as behaviour.py runs it: the body skill with LookForBall (or the given head) and LEDs.
+template <typename Head = skills::LookForBall>
+std::unique_ptr<api::Behaviour> with_head(std::unique_ptr<api::Behaviour> body) {
+  return std::make_unique<skills::SkillBehaviour>(std::move(body), std::make_unique<Head>());
+}
 
 struct Entry {
   const char* name;
@@ -57,6 +75,34 @@ const std::vector<Entry>& entries() {
          const float x = p.number("x", 0), y = p.number("y", 0), theta = p.number("theta", 0);
          return std::make_unique<GoToPose>(api::AbsCoord{x, y, theta});
        }},
+      // The skills, named and parameterised as in behaviour_py/behaviour.py.
+      {"GoToPose",
+       "thesis Algorithm 4.3 with forward-first, head looking for the ball: x (mm), y (mm), theta (rad), "
+       "face_ball (1: end facing the ball instead of theta)",
+       [](ParamReader& p) {
+         const float x = p.number("x", 0), y = p.number("y", 0), theta = p.number("theta", 0);
+         return with_head(std::make_unique<skills::GoToPose>(x, y, theta, p.flag("face_ball")));
+       }},
+      {"GoToBall", "walks behind the ball facing the goal: goal_x (mm), goal_y (mm), behind (mm)",
+       [](ParamReader& p) {
+         const float goalX = p.number("goal_x", skills::OPPONENT_GOAL_X);
+         const float goalY = p.number("goal_y", skills::OPPONENT_GOAL_Y);
+         return with_head(std::make_unique<skills::GoToBall>(goalX, goalY, p.number("behind", skills::BEHIND_BALL_DIST)));
+       }},
+      {"LineUpAndKick",
+       "approaches the ball, lines up and kicks at the goal: goal_x (mm), goal_y (mm), dribble (1: dribble), "
+       "power (0..1)",
+       [](ParamReader& p) {
+         const float goalX = p.number("goal_x", skills::OPPONENT_GOAL_X);
+         const float goalY = p.number("goal_y", skills::OPPONENT_GOAL_Y);
+         const bool dribble = p.flag("dribble");
+         const float power = p.number("power", dribble ? skills::DRIBBLE_POWER : skills::KICK_POWER);
+         return with_head(std::make_unique<skills::LineUpAndKick>(goalX, goalY, dribble, power));
+       }},
+      {"TrackBall", "stands, head pointed at the ball",
+       [](ParamReader&) { return with_head<skills::TrackBall>(std::make_unique<skills::Stand>()); }},
+      {"HeadScan", "stands, head sweeping side to side",
+       [](ParamReader&) { return with_head<skills::HeadScan>(std::make_unique<skills::Stand>()); }},
   };
   return all;
 }

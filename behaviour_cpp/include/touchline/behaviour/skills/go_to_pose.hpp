@@ -1,0 +1,52 @@
+#pragma once
+// GoToPose: walk to a field pose. Thesis Algorithm 4.3 with the forward-first fix; the port
+// of behaviour_py/skills/go_to_pose.py.
+//
+// Far from the target the robot turns to face it and walks forward (it walks faster forward
+// than sideways); within FORWARD_FIRST_DIST it runs Algorithm 4.3: turn on the spot while the
+// heading is off by more than TURN_FIRST_ANGLE, else walk the forward/left decomposition of
+// the target while turning to the target heading. Arrived (with hysteresis): stand.
+#include "touchline/robot_api/behaviour.hpp"
+
+namespace touchline::behaviour::skills {
+
+inline constexpr float WALK_GAIN = 2.f;                      ///< 1/s: walk request (mm/s) per mm of position error
+inline constexpr float TURN_GAIN = 2.f;                      ///< 1/s: turn request (rad/s) per rad of heading error
+inline constexpr float FORWARD_FIRST_DIST = 400.f;           ///< mm: beyond this, face the target and walk forward
+inline constexpr float FORWARD_FIRST_LEAVE_DIST = 500.f;     ///< mm: back to forward-first only beyond this
+inline constexpr float FACE_TARGET_ANGLE = 15.f * api::kPi / 180.f; ///< rad: forward-first walks only when facing this well
+inline constexpr float TURN_FIRST_ANGLE = 15.f * api::kPi / 180.f;  ///< rad: Algorithm 4.3 turns on the spot beyond this
+inline constexpr float ARRIVE_DIST = 40.f;                   ///< mm: arrived within this ...
+inline constexpr float ARRIVE_ANGLE = 0.1f;                  ///< rad: ... and this
+inline constexpr float LEAVE_DIST = 150.f;                   ///< mm: arrived until pushed beyond this ...
+inline constexpr float LEAVE_ANGLE = 0.35f;                  ///< rad: ... or turned beyond this
+
+class GoToPose : public api::Behaviour {
+ public:
+  /// Target (x, y) in mm and heading theta in rad, field frame; with faceBall the robot
+  /// ends facing the ball instead of theta.
+  explicit GoToPose(float x = 0.f, float y = 0.f, float theta = 0.f, bool faceBall = false);
+  void setTarget(float x, float y, float theta);
+  api::ActionCommand::All tick(const api::Blackboard& blackboard) override;
+
+  bool arrived() const { return arrived_; }
+  bool near() const { return near_; }
+
+ private:
+  /// How far (rad, + left) the robot must turn to have its final heading.
+  float turnError(const api::Blackboard& blackboard, const api::AbsCoord& pos) const;
+  void updateArrived(float distance, float turnError);
+  void updateNear(float distance);
+  /// Face the target, then walk straight at it, steering.
+  api::ActionCommand::Body forwardFirst(const api::RRCoord& toTarget) const;
+  /// Thesis Algorithm 4.3: the target in the robot frame (runswift angles), walked at
+  /// proportional speed while turning to the final heading.
+  api::ActionCommand::Body algorithm43(const api::AbsCoord& pos, float turnError) const;
+
+  float x_ = 0, y_ = 0, theta_ = 0;
+  bool faceBall_ = false;
+  bool arrived_ = false;
+  bool near_ = false; ///< within FORWARD_FIRST_DIST: running Algorithm 4.3
+};
+
+} // namespace touchline::behaviour::skills

@@ -1,0 +1,54 @@
+#pragma once
+// LineUpAndKick: approach the ball (GoToBall), line the kicking foot up behind it facing the
+// goal with small steps, and kick (or dribble) once aligned. The foot is chosen on the
+// ball's side when lining up starts and kept until it ends. The port of
+// behaviour_py/skills/line_up_and_kick.py.
+#include <optional>
+
+#include "touchline/behaviour/skills/ball.hpp"
+#include "touchline/behaviour/skills/go_to_ball.hpp"
+
+namespace touchline::behaviour::skills {
+
+inline constexpr float FOOT_OFFSET = 50.f;           ///< mm: each foot's centre left/right of the body centre
+inline constexpr float KICK_BALL_X = 130.f;          ///< mm: ball centre ahead of the body centre to kick (toe 80 + radius 32.5 + gap)
+inline constexpr float KICK_X_TOLERANCE = 40.f;      ///< mm
+inline constexpr float KICK_Y_TOLERANCE = 25.f;      ///< mm: ball centre from the kicking foot's centre line
+inline constexpr float KICK_ANGLE_TOLERANCE = 10.f * api::kPi / 180.f; ///< rad: heading error to the goal
+inline constexpr float LINE_UP_ENTER_DIST = 300.f;   ///< mm: start lining up when the ball is this close ...
+inline constexpr float LINE_UP_ENTER_ANGLE = 0.6f;   ///< rad: ... ahead, and the goal this well in line
+inline constexpr float LINE_UP_LEAVE_DIST = 500.f;   ///< mm: back to approaching beyond this ...
+inline constexpr float LINE_UP_LEAVE_ANGLE = 1.0f;   ///< rad: ... or this far off
+inline constexpr float LINE_UP_GAIN = 2.f;           ///< 1/s: step request (mm/s) per mm of error
+inline constexpr float LINE_UP_MAX_SPEED = 100.f;    ///< mm/s: small steps, either axis
+inline constexpr float LINE_UP_MAX_TURN = 0.5f;      ///< rad/s
+inline constexpr float KICK_POWER = 1.f;             ///< default power of a kick ...
+inline constexpr float DRIBBLE_POWER = 0.3f;         ///< ... and of a dribble
+
+class LineUpAndKick : public api::Behaviour {
+ public:
+  /// goalX, goalY: where to kick (mm); dribble: dribble instead of kicking; power: [0, 1],
+  /// nullopt for KICK_POWER or DRIBBLE_POWER.
+  explicit LineUpAndKick(float goalX = OPPONENT_GOAL_X, float goalY = OPPONENT_GOAL_Y, bool dribble = false,
+                         std::optional<float> power = std::nullopt);
+  api::ActionCommand::All tick(const api::Blackboard& blackboard) override;
+
+  bool liningUp() const { return liningUp_; }
+  api::ActionCommand::Foot foot() const { return foot_; }
+  float power() const { return power_; }
+
+ private:
+  void updateLiningUp(const api::RRCoord& ballRR, float aimError);
+  float footY() const;
+  /// Kick when the ball is in front of the foot and the goal ahead; else step closer.
+  api::ActionCommand::Body lineUp(const api::RRCoord& ballRR, float aimError) const;
+
+  float goalX_, goalY_;
+  bool dribble_;
+  float power_;
+  GoToBall goToBall_;
+  bool liningUp_ = false;
+  api::ActionCommand::Foot foot_ = api::ActionCommand::Foot::LEFT;
+};
+
+} // namespace touchline::behaviour::skills

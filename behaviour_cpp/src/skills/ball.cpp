@@ -1,0 +1,23 @@
+#include "touchline/behaviour/skills/ball.hpp"
+
+#include <cmath>
+
+namespace touchline::behaviour::skills {
+
+bool ballRecentlySeen(const api::Blackboard& blackboard) {
+  return blackboard.localisation.ballLostCount <= BALL_LOST_FRAMES;
+}
+
+api::AbsCoord pointBehindBall(const api::AbsCoord& ball, float goalX, float goalY, float behind) {
+  const float dx = goalX - ball.x;
+  const float dy = goalY - ball.y;
+  const float dist = std::hypot(dx, dy);
+  float dirX = 1.f, dirY = 0.f;
+  if (dist >= MIN_GOAL_DIST) {
+    dirX = dx / dist;
+    dirY = dy / dist;
+  }
+  return {ball.x - behind * dirX, ball.y - behind * dirY, std::atan2(dirY, dirX)};
+}
+
+} // namespace touchline::behaviour::skills

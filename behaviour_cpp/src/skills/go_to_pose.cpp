@@ -1,0 +1,81 @@
+#include "touchline/behaviour/skills/go_to_pose.hpp"
+
+#include <cmath>
+
+#include "touchline/behaviour/skills/actioncommand.hpp"
+#include "touchline/behaviour/skills/robot_limits.hpp"
+
+namespace touchline::behaviour::skills {
+
+using namespace api;
+
+GoToPose::GoToPose(float x, float y, float theta, bool faceBall) : faceBall_(faceBall) {
+  setTarget(x, y, theta);
+}
+
+void GoToPose::setTarget(float x, float y, float theta) {
+  x_ = x;
+  y_ = y;
+  theta_ = theta;
+}
+
+ActionCommand::All GoToPose::tick(const Blackboard& blackboard) {
+  const AbsCoord pos = blackboard.localisation.robotPos;
+  const RRCoord toTarget = toRobotRelative(pos, x_, y_);
+  const float error = turnError(blackboard, pos);
+  updateArrived(toTarget.distance, error);
+  if (arrived_) return actioncommand::compose({}, actioncommand::stand());
+  updateNear(toTarget.distance);
+  ActionCommand::Body body;
+  if (!near_) {
+    body = forwardFirst(toTarget);
+  } else if (std::fabs(error) > TURN_FIRST_ANGLE) {
+    body = actioncommand::walk(0.f, 0.f, clampTurn(TURN_GAIN * error));
+  } else {
+    body = algorithm43(pos, error);
+  }
+  return actioncommand::compose({}, body);
+}
+
+float GoToPose::turnError(const Blackboard& blackboard, const AbsCoord& pos) const {
+  if (faceBall_) {
+    const AbsCoord ball = blackboard.localisation.ballPos;
+    return toRobotRelative(pos, ball.x, ball.y).heading;
+  }
+  return normaliseTheta(theta_ - pos.theta);
+}
+
+void GoToPose::updateArrived(float distance, float error) {
+  if (arrived_) {
+    arrived_ = distance < LEAVE_DIST && std::fabs(error) < LEAVE_ANGLE;
+  } else {
+    arrived_ = distance < ARRIVE_DIST && std::fabs(error) < ARRIVE_ANGLE;
+  }
+}
+
+void GoToPose::updateNear(float distance) {
+  if (near_) {
+    near_ = distance < FORWARD_FIRST_LEAVE_DIST;
+  } else {
+    near_ = distance < FORWARD_FIRST_DIST;
+  }
+}
+
+ActionCommand::Body GoToPose::forwardFirst(const RRCoord& toTarget) const {
+  const float turn = clampTurn(TURN_GAIN * toTarget.heading);
+  if (std::fabs(toTarget.heading) > FACE_TARGET_ANGLE) return actioncommand::walk(0.f, 0.f, turn);
+  const WalkVelocity v = clampWalk(WALK_GAIN * toTarget.distance, 0.f);
+  return actioncommand::walk(v.forward, v.left, turn);
+}
+
+ActionCommand::Body GoToPose::algorithm43(const AbsCoord& pos, float error) const {
+  const float xDiff = x_ - pos.x;
+  const float yDiff = y_ - pos.y;
+  const float theta = kPi / 2 - pos.theta;
+  const float fwd = xDiff * std::sin(theta) + yDiff * std::cos(theta);
+  const float lft = xDiff * std::cos(theta) - yDiff * std::sin(theta);
+  const WalkVelocity v = clampWalk(WALK_GAIN * fwd, WALK_GAIN * -lft);
+  return actioncommand::walk(v.forward, v.left, clampTurn(TURN_GAIN * error));
+}
+
+} // namespace touchline::behaviour::skills

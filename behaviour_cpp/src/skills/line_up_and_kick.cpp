@@ -1,0 +1,61 @@
+#include "touchline/behaviour/skills/line_up_and_kick.hpp"
+
+#include <cmath>
+
+#include "touchline/behaviour/skills/actioncommand.hpp"
+#include "touchline/behaviour/skills/go_to_pose.hpp"
+#include "touchline/behaviour/skills/robot_limits.hpp"
+
+namespace touchline::behaviour::skills {
+
+using namespace api;
+
+LineUpAndKick::LineUpAndKick(float goalX, float goalY, bool dribble, std::optional<float> power)
+    : goalX_(goalX),
+      goalY_(goalY),
+      dribble_(dribble),
+      power_(power.value_or(dribble ? DRIBBLE_POWER : KICK_POWER)),
+      goToBall_(goalX, goalY, BEHIND_BALL_DIST) {}
+
+ActionCommand::All LineUpAndKick::tick(const Blackboard& blackboard) {
+  if (!ballRecentlySeen(blackboard)) {
+    liningUp_ = false;
+    return actioncommand::compose({}, actioncommand::stand());
+  }
+  const AbsCoord pos = blackboard.localisation.robotPos;
+  const AbsCoord ball = blackboard.localisation.ballPos;
+  const RRCoord ballRR = toRobotRelative(pos, ball.x, ball.y);
+  const float aimError = normaliseTheta(std::atan2(goalY_ - ball.y, goalX_ - ball.x) - pos.theta);
+  updateLiningUp(ballRR, aimError);
+  if (!liningUp_) return goToBall_.tick(blackboard);
+  return actioncommand::compose({}, lineUp(ballRR, aimError));
+}
+
+void LineUpAndKick::updateLiningUp(const RRCoord& ballRR, float aimError) {
+  if (liningUp_) {
+    liningUp_ = ballRR.distance < LINE_UP_LEAVE_DIST && std::fabs(ballRR.heading) < LINE_UP_LEAVE_ANGLE &&
+                std::fabs(aimError) < LINE_UP_LEAVE_ANGLE;
+    return;
+  }
+  liningUp_ = ballRR.distance < LINE_UP_ENTER_DIST && std::fabs(ballRR.heading) < LINE_UP_ENTER_ANGLE &&
+              std::fabs(aimError) < LINE_UP_ENTER_ANGLE;
+  if (liningUp_) foot_ = ballRR.y() >= 0.f ? ActionCommand::Foot::LEFT : ActionCommand::Foot::RIGHT;
+}
+
+float LineUpAndKick::footY() const { return foot_ == ActionCommand::Foot::LEFT ? FOOT_OFFSET : -FOOT_OFFSET; }
+
+ActionCommand::Body LineUpAndKick::lineUp(const RRCoord& ballRR, float aimError) const {
+  const float xError = ballRR.x() - KICK_BALL_X;
+  const float yError = ballRR.y() - footY();
+  if (std::fabs(xError) < KICK_X_TOLERANCE && std::fabs(yError) < KICK_Y_TOLERANCE &&
+      std::fabs(aimError) < KICK_ANGLE_TOLERANCE) {
+    if (dribble_) return actioncommand::dribble(power_, foot_);
+    return actioncommand::kick(power_, foot_);
+  }
+  const float forward = clamp(LINE_UP_GAIN * xError, -LINE_UP_MAX_SPEED, LINE_UP_MAX_SPEED);
+  const float left = clamp(LINE_UP_GAIN * yError, -LINE_UP_MAX_SPEED, LINE_UP_MAX_SPEED);
+  const float turn = clamp(TURN_GAIN * aimError, -LINE_UP_MAX_TURN, LINE_UP_MAX_TURN);
+  return actioncommand::walk(forward, left, turn);
+}
+
+} // namespace touchline::behaviour::skills

@@ -1,0 +1,134 @@
+"""The robot's behaviour: tick(blackboard) -> robot.All, once per camera frame.
+
+robot.params (strings, set by the shim) picks the body skill with "skill" (default
+GoToBall) and gives its parameters; the head runs LookForBall (TrackBall while the ball was
+seen recently, else HeadScan); the chest LED says whether the ball is seen. The C++ port is
+behaviour_cpp/src/registry.cpp (same skill names and parameters) and skills/skill_behaviour.
+"""
+import math
+
+import actioncommand
+import robot
+
+from skills.ball import BEHIND_BALL_DIST, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, ballRecentlySeen
+from skills.go_to_ball import GoToBall
+from skills.go_to_pose import GoToPose
+from skills.head_scan import HeadScan
+from skills.line_up_and_kick import DRIBBLE_POWER, KICK_POWER, LineUpAndKick
+from skills.look_for_ball import LookForBall
+from skills.stand import Stand
+from skills.track_ball import TrackBall
+
+DEFAULT_SKILL = "GoToBall"
+BALL_SEEN_CHEST = 0x00ff00   # green: the ball was seen recently
+BALL_LOST_CHEST = 0xff0000   # red: searching
+
+
+class BehaviourError(ValueError):
+    """A wrong skill name or parameter; the message is one line for the user."""
+
+
+class SkillBehaviour:
+    """A body skill and a head skill ticked together, with the chest LED."""
+
+    def __init__(self, body, head):
+        self.body = body
+        self.head = head
+
+    def tick(self, blackboard):
+        body = self.body.tick(blackboard).body
+        head = self.head.tick(blackboard).head
+        chest = BALL_SEEN_CHEST if ballRecentlySeen(blackboard) else BALL_LOST_CHEST
+        return actioncommand.compose(head=head, body=body, leds=actioncommand.leds(chest))
+
+
+class ParamReader:
+    """Reads numeric skill parameters, rejecting unknown keys and malformed numbers (as the
+    C++ registry's ParamReader does)."""
+
+    def __init__(self, skill, params):
+        self.skill = skill
+        self.params = params
+        self.known = {"skill"}
+
+    def number(self, key, fallback):
+        self.known.add(key)
+        if key not in self.params:
+            return fallback
+        text = self.params[key]
+        try:
+            # As strtof: leading spaces pass, trailing ones and underscores do not.
+            value = float(text) if text.rstrip() == text and "_" not in text else math.nan
+        except ValueError:
+            value = math.nan
+        if not math.isfinite(value):
+            raise BehaviourError("%s: parameter %s must be a number (got '%s')" % (self.skill, key, text))
+        return value
+
+    def flag(self, key):
+        return self.number(key, 0.0) != 0.0
+
+    def rejectUnknown(self):
+        for key in sorted(self.params):
+            if key not in self.known:
+                raise BehaviourError("%s: unknown parameter '%s'" % (self.skill, key))
+
+
+def makeGoToPose(p):
+    return GoToPose(p.number("x", 0.0), p.number("y", 0.0), p.number("theta", 0.0), p.flag("face_ball"))
+
+
+def makeGoToBall(p):
+    goalX = p.number("goal_x", OPPONENT_GOAL_X)
+    goalY = p.number("goal_y", OPPONENT_GOAL_Y)
+    return GoToBall(goalX, goalY, p.number("behind", BEHIND_BALL_DIST))
+
+
+def makeLineUpAndKick(p):
+    goalX = p.number("goal_x", OPPONENT_GOAL_X)
+    goalY = p.number("goal_y", OPPONENT_GOAL_Y)
+    dribble = p.flag("dribble")
+    return LineUpAndKick(goalX, goalY, dribble, p.number("power", DRIBBLE_POWER if dribble else KICK_POWER))
+
+
+# Skill name -> (body skill factory, head skill factory). Names match the C++ registry.
+SKILL_NAMES = ("GoToPose", "GoToBall", "LineUpAndKick", "TrackBall", "HeadScan")
+SKILLS = {
+    "GoToPose": (makeGoToPose, LookForBall),
+    "GoToBall": (makeGoToBall, LookForBall),
+    "LineUpAndKick": (makeLineUpAndKick, LookForBall),
+    "TrackBall": (lambda p: Stand(), TrackBall),
+    "HeadScan": (lambda p: Stand(), HeadScan),
+}
+
+
+def makeBehaviour(params):
+    """The SkillBehaviour that params (a dict of strings) asks for. Raises BehaviourError."""
+    name = params.get("skill", DEFAULT_SKILL)
+    if name not in SKILLS:
+        raise BehaviourError("unknown skill '%s' (known: %s)" % (name, ", ".join(SKILL_NAMES)))
+    makeBody, makeHead = SKILLS[name]
+    reader = ParamReader(name, params)
+    body = makeBody(reader)
+    reader.rejectUnknown()
+    return SkillBehaviour(body, makeHead())
+
+
+_behaviour = None
+_params = None
+
+
+def reset():
+    """Forget the running skill: the next tick builds it afresh from robot.params."""
+    global _behaviour, _params
+    _behaviour = None
+    _params = None
+
+
+def tick(blackboard):
+    global _behaviour, _params
+    params = dict(getattr(robot, "params", {}))
+    if _behaviour is None or params != _params:  # one skill instance while params stay
+        _behaviour = makeBehaviour(params)
+        _params = params
+    return _behaviour.tick(blackboard)

@@ -1,0 +1,93 @@
+"""GoToPose: walk to a field pose. Thesis Algorithm 4.3 with the forward-first fix.
+
+Far from the target the robot turns to face it and walks forward (it walks faster forward
+than sideways); within FORWARD_FIRST_DIST it runs Algorithm 4.3: turn on the spot while the
+heading is off by more than TURN_FIRST_ANGLE, else walk the forward/left decomposition of
+the target while turning to the target heading. Arrived (with hysteresis): stand.
+"""
+import math
+
+import actioncommand
+import robot
+
+from .robot_limits import clampTurn, clampWalk
+
+WALK_GAIN = 2.0                        # 1/s: walk request (mm/s) per mm of position error
+TURN_GAIN = 2.0                        # 1/s: turn request (rad/s) per rad of heading error
+FORWARD_FIRST_DIST = 400.0             # mm: beyond this, face the target and walk forward
+FORWARD_FIRST_LEAVE_DIST = 500.0       # mm: back to forward-first only beyond this
+FACE_TARGET_ANGLE = math.radians(15)   # rad: forward-first walks only when facing this well
+TURN_FIRST_ANGLE = math.radians(15)    # rad: Algorithm 4.3 turns on the spot beyond this
+ARRIVE_DIST = 40.0                     # mm: arrived within this ...
+ARRIVE_ANGLE = 0.1                     # rad: ... and this
+LEAVE_DIST = 150.0                     # mm: arrived until pushed beyond this ...
+LEAVE_ANGLE = 0.35                     # rad: ... or turned beyond this
+
+
+class GoToPose:
+    def __init__(self, x=0.0, y=0.0, theta=0.0, faceBall=False):
+        """Target (x, y) in mm and heading theta in rad, field frame; with faceBall the
+        robot ends facing the ball instead of theta."""
+        self.setTarget(x, y, theta)
+        self.faceBall = faceBall
+        self.arrived = False
+        self.near = False  # within FORWARD_FIRST_DIST: running Algorithm 4.3
+
+    def setTarget(self, x, y, theta):
+        self.x = x
+        self.y = y
+        self.theta = theta
+
+    def tick(self, blackboard):
+        pos = blackboard.localisation.robotPos
+        toTarget = robot.toRobotRelative(pos, self.x, self.y)
+        turnError = self.turnError(blackboard, pos)
+        self.updateArrived(toTarget.distance, turnError)
+        if self.arrived:
+            return actioncommand.compose(body=actioncommand.stand())
+        self.updateNear(toTarget.distance)
+        if not self.near:
+            body = self.forwardFirst(toTarget)
+        elif abs(turnError) > TURN_FIRST_ANGLE:
+            body = actioncommand.walk(turn=clampTurn(TURN_GAIN * turnError))
+        else:
+            body = self.algorithm43(pos, turnError)
+        return actioncommand.compose(body=body)
+
+    def turnError(self, blackboard, pos):
+        """How far (rad, + left) the robot must turn to have its final heading."""
+        if self.faceBall:
+            ball = blackboard.localisation.ballPos
+            return robot.toRobotRelative(pos, ball.x, ball.y).heading
+        return robot.normaliseTheta(self.theta - pos.theta)
+
+    def updateArrived(self, distance, turnError):
+        if self.arrived:
+            self.arrived = distance < LEAVE_DIST and abs(turnError) < LEAVE_ANGLE
+        else:
+            self.arrived = distance < ARRIVE_DIST and abs(turnError) < ARRIVE_ANGLE
+
+    def updateNear(self, distance):
+        if self.near:
+            self.near = distance < FORWARD_FIRST_LEAVE_DIST
+        else:
+            self.near = distance < FORWARD_FIRST_DIST
+
+    def forwardFirst(self, toTarget):
+        """Face the target, then walk straight at it, steering."""
+        turn = clampTurn(TURN_GAIN * toTarget.heading)
+        if abs(toTarget.heading) > FACE_TARGET_ANGLE:
+            return actioncommand.walk(turn=turn)
+        forward, left = clampWalk(WALK_GAIN * toTarget.distance, 0.0)
+        return actioncommand.walk(forward, left, turn)
+
+    def algorithm43(self, pos, turnError):
+        """Thesis Algorithm 4.3: the target in the robot frame (runswift angles), walked
+        at proportional speed while turning to the final heading."""
+        xDiff = self.x - pos.x
+        yDiff = self.y - pos.y
+        theta = math.pi / 2 - pos.theta
+        fwd = xDiff * math.sin(theta) + yDiff * math.cos(theta)
+        lft = xDiff * math.cos(theta) - yDiff * math.sin(theta)
+        forward, left = clampWalk(WALK_GAIN * fwd, WALK_GAIN * -lft)
+        return actioncommand.walk(forward, left, clampTurn(TURN_GAIN * turnError))

@@ -1,0 +1,84 @@
+"""LineUpAndKick: approach the ball (GoToBall), line the kicking foot up behind it facing
+the goal with small steps, and kick (or dribble) once aligned.
+
+The foot is chosen on the ball's side when lining up starts and kept until it ends.
+"""
+import math
+
+import actioncommand
+import robot
+
+from .ball import BEHIND_BALL_DIST, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, ballRecentlySeen
+from .go_to_ball import GoToBall
+from .go_to_pose import TURN_GAIN
+from .robot_limits import clamp
+
+FOOT_OFFSET = 50.0                         # mm: each foot's centre left/right of the body centre
+KICK_BALL_X = 130.0                        # mm: ball centre ahead of the body centre to kick (toe 80 + radius 32.5 + gap)
+KICK_X_TOLERANCE = 40.0                    # mm
+KICK_Y_TOLERANCE = 25.0                    # mm: ball centre from the kicking foot's centre line
+KICK_ANGLE_TOLERANCE = math.radians(10)    # rad: heading error to the goal
+LINE_UP_ENTER_DIST = 300.0                 # mm: start lining up when the ball is this close ...
+LINE_UP_ENTER_ANGLE = 0.6                  # rad: ... ahead, and the goal this well in line
+LINE_UP_LEAVE_DIST = 500.0                 # mm: back to approaching beyond this ...
+LINE_UP_LEAVE_ANGLE = 1.0                  # rad: ... or this far off
+LINE_UP_GAIN = 2.0                         # 1/s: step request (mm/s) per mm of error
+LINE_UP_MAX_SPEED = 100.0                  # mm/s: small steps, either axis
+LINE_UP_MAX_TURN = 0.5                     # rad/s
+KICK_POWER = 1.0                           # default power of a kick ...
+DRIBBLE_POWER = 0.3                        # ... and of a dribble
+
+
+class LineUpAndKick:
+    def __init__(self, goalX=OPPONENT_GOAL_X, goalY=OPPONENT_GOAL_Y, dribble=False, power=None):
+        """goalX, goalY: where to kick (mm); dribble: dribble instead of kicking; power:
+        [0, 1], None for KICK_POWER or DRIBBLE_POWER."""
+        self.goalX = goalX
+        self.goalY = goalY
+        self.dribble = dribble
+        if power is None:
+            power = DRIBBLE_POWER if dribble else KICK_POWER
+        self.power = power
+        self.goToBall = GoToBall(goalX, goalY, BEHIND_BALL_DIST)
+        self.liningUp = False
+        self.foot = robot.Foot.LEFT
+
+    def tick(self, blackboard):
+        if not ballRecentlySeen(blackboard):
+            self.liningUp = False
+            return actioncommand.compose(body=actioncommand.stand())
+        pos = blackboard.localisation.robotPos
+        ball = blackboard.localisation.ballPos
+        ballRR = robot.toRobotRelative(pos, ball.x, ball.y)
+        aimError = robot.normaliseTheta(math.atan2(self.goalY - ball.y, self.goalX - ball.x) - pos.theta)
+        self.updateLiningUp(ballRR, aimError)
+        if not self.liningUp:
+            return self.goToBall.tick(blackboard)
+        return actioncommand.compose(body=self.lineUp(ballRR, aimError))
+
+    def updateLiningUp(self, ballRR, aimError):
+        if self.liningUp:
+            self.liningUp = (ballRR.distance < LINE_UP_LEAVE_DIST and abs(ballRR.heading) < LINE_UP_LEAVE_ANGLE
+                             and abs(aimError) < LINE_UP_LEAVE_ANGLE)
+            return
+        self.liningUp = (ballRR.distance < LINE_UP_ENTER_DIST and abs(ballRR.heading) < LINE_UP_ENTER_ANGLE
+                         and abs(aimError) < LINE_UP_ENTER_ANGLE)
+        if self.liningUp:
+            self.foot = robot.Foot.LEFT if ballRR.y() >= 0.0 else robot.Foot.RIGHT
+
+    def footY(self):
+        return FOOT_OFFSET if self.foot == robot.Foot.LEFT else -FOOT_OFFSET
+
+    def lineUp(self, ballRR, aimError):
+        """Kick when the ball is in front of the foot and the goal ahead; else step closer."""
+        xError = ballRR.x() - KICK_BALL_X
+        yError = ballRR.y() - self.footY()
+        if (abs(xError) < KICK_X_TOLERANCE and abs(yError) < KICK_Y_TOLERANCE
+                and abs(aimError) < KICK_ANGLE_TOLERANCE):
+            if self.dribble:
+                return actioncommand.dribble(self.power, self.foot)
+            return actioncommand.kick(self.power, self.foot)
+        forward = clamp(LINE_UP_GAIN * xError, -LINE_UP_MAX_SPEED, LINE_UP_MAX_SPEED)
+        left = clamp(LINE_UP_GAIN * yError, -LINE_UP_MAX_SPEED, LINE_UP_MAX_SPEED)
+        turn = clamp(TURN_GAIN * aimError, -LINE_UP_MAX_TURN, LINE_UP_MAX_TURN)
+        return actioncommand.walk(forward, left, turn)

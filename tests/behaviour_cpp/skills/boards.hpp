@@ -1,0 +1,34 @@
+#pragma once
+// Blackboards with values for the skill tests: the same boards as
+// tests/behaviour_py/boards.py builds for the Python skills.
+#include <cmath>
+#include <utility>
+
+#include "touchline/robot_api/blackboard.hpp"
+
+namespace touchline::behaviour::test {
+
+/// The robot at pos, the ball at the field point (ballX, ballY); vision and localisation
+/// agree on it. seen: vision.ballSeen; lost: localisation.ballLostCount.
+inline api::Blackboard board(api::AbsCoord pos = {}, float ballX = 1000.f, float ballY = 0.f, bool seen = true,
+                             int lost = 0, float headYaw = 0.f) {
+  api::Blackboard blackboard;
+  blackboard.localisation.robotPos = pos;
+  blackboard.localisation.ballPos = {ballX, ballY, 0.f};
+  blackboard.localisation.ballPosRR = api::toRobotRelative(pos, ballX, ballY);
+  blackboard.localisation.ballLostCount = lost;
+  blackboard.vision.ballSeen = seen;
+  blackboard.vision.ball = blackboard.localisation.ballPosRR;
+  blackboard.motion.headYaw = headYaw;
+  return blackboard;
+}
+
+/// The field point `forward`, `left` mm from the robot at pos.
+inline std::pair<float, float> relative(api::AbsCoord pos, float forward, float left) {
+  return {pos.x + forward * std::cos(pos.theta) - left * std::sin(pos.theta),
+          pos.y + forward * std::sin(pos.theta) + left * std::cos(pos.theta)};
+}
+
+inline float radians(float degrees) { return degrees * api::kPi / 180.f; }
+
+} // namespace touchline::behaviour::test

@@ -1,0 +1,62 @@
+"""Every skill constant has the same name and value in both ports: the C++ headers'
+`inline constexpr` constants against the Python modules' UPPER_CASE ones."""
+import ast
+import math
+import pathlib
+import re
+
+import pytest
+
+import behaviour
+from skills import ball, camera, go_to_pose, head_scan, line_up_and_kick, robot_limits
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+CPP_SKILLS = ROOT / "behaviour_cpp" / "include" / "touchline" / "behaviour" / "skills"
+PY_SKILLS = ROOT / "behaviour_py" / "skills"
+CONSTANT = re.compile(r"inline constexpr (?:float|int|int32_t) (\w+) = ([^;]+);")
+FLOAT_LITERAL = re.compile(r"\b(\d+(?:\.\d*)?)f\b")
+
+
+def cpp_constants():
+    """name -> value of every constant in the C++ skill headers, the expressions evaluated."""
+    pending = {}
+    for header in sorted(CPP_SKILLS.glob("*.hpp")):
+        for name, expression in CONSTANT.findall(header.read_text()):
+            pending[name] = FLOAT_LITERAL.sub(r"\1", expression).replace("api::kPi", "kPi")
+    values = {}
+    while pending:  # constants use constants of other headers: evaluate as they resolve
+        resolved = {}
+        for name, expression in pending.items():
+            try:
+                resolved[name] = eval(expression, {"kPi": math.pi}, values)  # our own headers' arithmetic
+            except NameError:
+                pass
+        assert resolved, "unresolvable C++ constants: %s" % pending
+        values.update(resolved)
+        pending = {name: e for name, e in pending.items() if name not in resolved}
+    return values
+
+
+def python_constants():
+    """name -> value of every module-level UPPER_CASE number in behaviour_py/skills and the
+    chest colours of behaviour.py."""
+    modules = {"ball": ball, "camera": camera, "go_to_pose": go_to_pose, "head_scan": head_scan,
+               "line_up_and_kick": line_up_and_kick, "robot_limits": robot_limits}
+    assert {path.stem for path in PY_SKILLS.glob("*.py")} - set(modules) <= {"__init__", "go_to_ball", "look_for_ball",
+                                                                              "stand", "track_ball"}
+    values = {}
+    for name, module in modules.items():
+        for node in ast.parse((PY_SKILLS / (name + ".py")).read_text()).body:
+            if isinstance(node, ast.Assign) and node.targets[0].id.isupper():
+                values[node.targets[0].id] = getattr(module, node.targets[0].id)
+    values.update(BALL_SEEN_CHEST=behaviour.BALL_SEEN_CHEST, BALL_LOST_CHEST=behaviour.BALL_LOST_CHEST)
+    return values
+
+
+def test_the_same_constants_in_both_ports():
+    assert sorted(cpp_constants()) == sorted(python_constants())
+
+
+@pytest.mark.parametrize("name, value", sorted(cpp_constants().items()))
+def test_the_same_values_in_both_ports(name, value):
+    assert python_constants()[name] == pytest.approx(value, rel=1e-6)
