@@ -1,0 +1,93 @@
+"""ReplayLog and ReplaySession without a browser: time lookup, the frame's game state and
+statuses, and the play, pause, step, seek and speed commands on a fake clock."""
+import asyncio
+
+import pytest
+
+from known_log import FRAMES, ROBOTS, utime_of
+from touchline_viewer.replay import ReplaySession
+from touchline_viewer.replay_log import ReplayLog
+
+
+class FakeClock:
+    def __init__(self):
+        self.now = 100.0
+
+    def __call__(self):
+        return self.now
+
+
+@pytest.fixture(scope="module")
+def log(known_log):
+    return ReplayLog.load(known_log)
+
+
+def test_the_log_is_indexed_by_sim_time(log):
+    assert (log.count, log.t0, log.t1) == (FRAMES, utime_of(0) / 1e6, utime_of(FRAMES - 1) / 1e6)
+    assert log.index_at(0) == 0, "before the first frame: the first frame"
+    assert log.index_at(utime_of(5) / 1e6) == 5
+    assert log.index_at(utime_of(5) / 1e6 + 0.02) == 5, "between frames: the last one at or before"
+    assert log.index_at(1e6) == FRAMES - 1
+
+
+def test_a_frame_carries_the_game_state_and_statuses_logged_up_to_it(log):
+    assert log.frame(5)["game"]["secs_remaining"] == 600
+    assert log.frame(6)["game"]["secs_remaining"] == 599
+    statuses = log.frame(0)["status"]
+    assert [(s["team"], s["player"]) for s in statuses] == [spec[:2] for spec in ROBOTS]
+    assert [s["state"] for s in statuses if not s["frames_missed"] == 0] == ["TIMED_OUT"]
+
+
+def test_step_seek_and_speed(log):
+    session = ReplaySession(log, send=None, clock=FakeClock())
+    session.apply({"cmd": "step", "n": -1})
+    assert session.index == 0, "clamped at the first frame"
+    session.apply({"cmd": "step", "n": 3})
+    assert session.index == 3
+    session.apply({"cmd": "seek", "t": utime_of(9) / 1e6})
+    assert session.index == 9
+    session.apply({"cmd": "step", "n": 50})
+    assert session.index == FRAMES - 1, "clamped at the last frame"
+    session.apply({"cmd": "speed", "x": 7})
+    assert session.speed == 8.0, "snapped to the nearest offered speed"
+    for bad in ({"cmd": "seek"}, {"cmd": "seek", "t": "soon"}, {"cmd": "step", "n": None}, {"cmd": "dance"}):
+        session.apply(bad)
+    assert (session.index, session.speed) == (FRAMES - 1, 8.0), "malformed commands change nothing"
+
+
+def test_play_follows_the_clock_times_speed_and_stops_at_the_end(log):
+    clock = FakeClock()
+    session = ReplaySession(log, send=None, clock=clock)
+    session.apply({"cmd": "speed", "x": 0.5})
+    session.apply({"cmd": "play"})
+    clock.now += 0.2  # 0.1 s of sim time at half speed: 3 frames on
+    assert session._advance() and session.index == 3 and session.playing
+    clock.now += 10
+    session._advance()
+    assert (session.index, session.playing) == (FRAMES - 1, False)
+    session.apply({"cmd": "play"})
+    assert (session.index, session.playing) == (0, True), "play at the end starts over"
+    session.apply({"cmd": "pause"})
+    clock.now += 1
+    assert session.index == 0 and not session.playing
+
+
+def test_every_command_is_answered_by_a_frame_that_acks_it(log):
+    async def scenario():
+        sent = []
+
+        async def send(frame):
+            sent.append(frame)
+
+        session = ReplaySession(log, send)
+        task = asyncio.create_task(session.run())
+        session.commands.put_nowait({"cmd": "step", "n": 2, "seq": 1})
+        session.commands.put_nowait({"cmd": "nonsense", "seq": 2})
+        while len(sent) < 3:
+            await asyncio.sleep(0.01)
+        task.cancel()
+        return sent
+
+    sent = asyncio.run(asyncio.wait_for(scenario(), 10))
+    assert [(f["ack"], f["replay"]["index"]) for f in sent] == [(None, 0), (1, 2), (2, 2)]
+    assert sent[1]["truth"]["frame"] == 2

@@ -1,0 +1,213 @@
+// Drawing the field and one world_truth_t on a 2D canvas. Field frame: mm, origin at the
+// centre, +x towards the goal team 0 attacks, +y left; screen y grows downwards.
+
+export const TEAM_COLOURS = ["#1e63ff", "#e8232a"]; // team 0 blue, team 1 red
+export const INACTIVE_COLOUR = "#8c8c8c";
+export const BALL_COLOUR = "#ff7f00";
+const CARPET = "#2e7d32";
+const LINE = "#f4f4f4";
+
+// The thesis camera model: a 60 degree cone along body heading + head yaw whose range grows
+// with head pitch, (pitch - MINPITCH) * 3000 / (MAXPITCH - MINPITCH) + 1000 mm.
+export const CAMERA = { fovRad: Math.PI / 3, minPitch: -0.67, maxPitch: 0.51 };
+export function cameraRangeMm(pitch) {
+  const { minPitch, maxPitch } = CAMERA;
+  return Math.max(0, (pitch - minPitch) * 3000 / (maxPitch - minPitch) + 1000);
+}
+
+// The mm -> canvas-pixel transform that fits the field and its border into w x h CSS px.
+export function makeView(field, w, h) {
+  const spanX = field.length_mm + 2 * field.border_mm, spanY = field.width_mm + 2 * field.border_mm;
+  const s = Math.min(w / spanX, h / spanY);
+  const ox = w / 2, oy = h / 2;
+  return { s, w, h, px: (x) => ox + x * s, py: (y) => oy - y * s };
+}
+
+const round1 = (v) => Math.round(v * 10) / 10;
+
+export function drawField(ctx, v, f) {
+  const L = f.length_mm / 2, W = f.width_mm / 2, B = f.border_mm, lw = f.line_width_mm;
+  ctx.fillStyle = "#1b1f24";
+  ctx.fillRect(0, 0, v.w, v.h);
+  ctx.fillStyle = CARPET;
+  ctx.fillRect(v.px(-L - B), v.py(W + B), (2 * L + 2 * B) * v.s, (2 * W + 2 * B) * v.s);
+  ctx.strokeStyle = LINE;
+  ctx.lineWidth = Math.max(1, lw * v.s);
+  const inset = lw / 2; // lengths are to the lines' outer edges
+  const rect = (x0, y0, x1, y1) => ctx.strokeRect(v.px(x0), v.py(y1), (x1 - x0) * v.s, (y1 - y0) * v.s);
+  rect(-L + inset, -W + inset, L - inset, W - inset);
+  line(ctx, v, 0, -W + inset, 0, W - inset);
+  ctx.beginPath();
+  ctx.arc(v.px(0), v.py(0), (f.centre_circle_diameter_mm / 2 - inset) * v.s, 0, 2 * Math.PI);
+  ctx.stroke();
+  for (const side of [-1, 1]) {
+    boxAtGoal(rect, side, L, inset, f.goal_box_length_mm, f.goal_box_width_mm);
+    boxAtGoal(rect, side, L, inset, f.penalty_area_length_mm, f.penalty_area_width_mm);
+    cross(ctx, v, side * (L - f.penalty_mark_distance_mm), 0, 50);
+    drawGoal(ctx, v, f, side);
+  }
+  cross(ctx, v, 0, 0, 50);
+}
+
+function boxAtGoal(rect, side, L, inset, depth, width) {
+  if (depth <= 0 || width <= 0) return; // e.g. no penalty area on the 2011 field
+  const xGoal = side * (L - inset), xIn = side * (L - depth + inset);
+  rect(Math.min(xGoal, xIn), -width / 2 + inset, Math.max(xGoal, xIn), width / 2 - inset);
+}
+
+function line(ctx, v, x0, y0, x1, y1) {
+  ctx.beginPath();
+  ctx.moveTo(v.px(x0), v.py(y0));
+  ctx.lineTo(v.px(x1), v.py(y1));
+  ctx.stroke();
+}
+
+function cross(ctx, v, x, y, halfMm) {
+  line(ctx, v, x - halfMm, y, x + halfMm, y);
+  line(ctx, v, x, y - halfMm, x, y + halfMm);
+}
+
+function drawGoal(ctx, v, f, side) {
+  const xLine = side * f.length_mm / 2, xBack = side * (f.length_mm / 2 + f.goal_depth_mm);
+  const halfW = f.goal_width_mm / 2;
+  ctx.save();
+  ctx.fillStyle = "rgba(220, 220, 220, 0.25)";
+  ctx.strokeStyle = "#d0d0d0";
+  ctx.lineWidth = 1;
+  const x0 = v.px(Math.min(xLine, xBack)), y0 = v.py(halfW);
+  ctx.fillRect(x0, y0, f.goal_depth_mm * v.s, 2 * halfW * v.s);
+  ctx.strokeRect(x0, y0, f.goal_depth_mm * v.s, 2 * halfW * v.s);
+  ctx.fillStyle = "#fff8c0";
+  ctx.strokeStyle = "#333";
+  for (const y of [-halfW, halfW]) {
+    ctx.beginPath();
+    ctx.arc(v.px(side * (f.length_mm / 2 - f.line_width_mm / 2)), v.py(y),
+      Math.max(2.5, f.goal_post_diameter_mm / 2 * v.s), 0, 2 * Math.PI);
+    ctx.fill();
+    ctx.stroke();
+  }
+  ctx.restore();
+}
+
+export function robotColour(r) {
+  return r.active ? (TEAM_COLOURS[r.team] || INACTIVE_COLOUR) : INACTIVE_COLOUR;
+}
+
+function drawCameraCone(ctx, v, r) {
+  const [x, y, th] = r.body, [yaw, pitch] = r.head;
+  const dir = th + yaw, half = CAMERA.fovRad / 2, range = cameraRangeMm(pitch) * v.s;
+  ctx.save();
+  ctx.beginPath();
+  ctx.moveTo(v.px(x), v.py(y));
+  ctx.arc(v.px(x), v.py(y), range, -(dir + half), -(dir - half)); // screen angles are mirrored
+  ctx.closePath();
+  ctx.globalAlpha = 0.09;
+  ctx.fillStyle = robotColour(r);
+  ctx.fill();
+  ctx.globalAlpha = 0.4;
+  ctx.lineWidth = 1;
+  ctx.strokeStyle = robotColour(r);
+  ctx.stroke();
+  ctx.restore();
+  return { dir_rad: Math.round(dir * 1000) / 1000, range_px: round1(range) };
+}
+
+function drawFoot(ctx, v, f, pose, colour) {
+  const [x, y, th] = pose, l = f.foot_length_mm * v.s, w = f.foot_width_mm * v.s;
+  ctx.save();
+  ctx.translate(v.px(x), v.py(y));
+  ctx.rotate(-th);
+  ctx.fillStyle = colour;
+  ctx.fillRect(-l / 2, -w / 2, l, w);
+  ctx.lineWidth = 1;
+  ctx.strokeStyle = "rgba(0, 0, 0, 0.6)";
+  ctx.strokeRect(-l / 2, -w / 2, l, w);
+  ctx.restore();
+}
+
+function drawHeading(ctx, v, r) {
+  const [x, y, th] = r.body, len = Math.max(14, 260 * v.s), head = Math.max(5, 70 * v.s);
+  const x0 = v.px(x), y0 = v.py(y), x1 = x0 + len * Math.cos(th), y1 = y0 - len * Math.sin(th);
+  ctx.save();
+  ctx.strokeStyle = "#101010";
+  ctx.fillStyle = "#101010";
+  ctx.lineWidth = 2;
+  ctx.beginPath();
+  ctx.moveTo(x0, y0);
+  ctx.lineTo(x1, y1);
+  ctx.stroke();
+  ctx.beginPath();
+  ctx.moveTo(x1 + 2 * Math.cos(th), y1 - 2 * Math.sin(th));
+  ctx.lineTo(x1 - head * Math.cos(th - 0.45), y1 + head * Math.sin(th - 0.45));
+  ctx.lineTo(x1 - head * Math.cos(th + 0.45), y1 + head * Math.sin(th + 0.45));
+  ctx.closePath();
+  ctx.fill();
+  ctx.restore();
+}
+
+function drawNumber(ctx, v, r) {
+  const x = v.px(r.body[0]), y = v.py(r.body[1]) - Math.max(16, 170 * v.s);
+  ctx.save();
+  ctx.font = "bold 13px 'DejaVu Sans', sans-serif";
+  ctx.textAlign = "center";
+  ctx.textBaseline = "middle";
+  ctx.lineWidth = 3;
+  ctx.strokeStyle = "#000";
+  ctx.strokeText(String(r.player), x, y);
+  ctx.fillStyle = r.active ? "#fff" : "#c8c8c8";
+  ctx.fillText(String(r.player), x, y);
+  ctx.restore();
+}
+
+// HOOK (not in the messages yet): sonar and penalised robots. world_truth_t carries neither;
+// when a message does, draw them here: the sonar's cones (thesis Algorithm 2.4) and a
+// penalised robot shown off the field or marked. Nothing is drawn until then.
+function drawRobotExtras(ctx, v, r) { // eslint-disable-line no-unused-vars
+}
+
+function drawBall(ctx, v, f, ball) {
+  const r = Math.max(4.5, f.ball_diameter_mm / 2 * v.s);
+  ctx.save();
+  ctx.beginPath();
+  ctx.arc(v.px(ball[0]), v.py(ball[1]), r, 0, 2 * Math.PI);
+  ctx.fillStyle = BALL_COLOUR;
+  ctx.fill();
+  ctx.lineWidth = 1;
+  ctx.strokeStyle = "#3a1d00";
+  ctx.stroke();
+  ctx.restore();
+  return r;
+}
+
+function clipToCarpet(ctx, v, f) {
+  const x = f.length_mm / 2 + f.border_mm, y = f.width_mm / 2 + f.border_mm;
+  ctx.beginPath();
+  ctx.rect(v.px(-x), v.py(y), 2 * x * v.s, 2 * y * v.s);
+  ctx.clip();
+}
+
+const pixel = (v, pose) => ({ x: pose[0], y: pose[1], px: round1(v.px(pose[0])), py: round1(v.py(pose[1])) });
+
+// Draws one truth frame over the field; returns what it drew, in canvas pixels.
+export function drawTruth(ctx, v, f, truth) {
+  ctx.save();
+  clipToCarpet(ctx, v, f); // the boundary walls: no camera sees past them
+  const robots = truth.robots.map((r) => ({ r, cone: drawCameraCone(ctx, v, r) }));
+  ctx.restore();
+  for (const { r } of robots) {
+    drawFoot(ctx, v, f, r.left, robotColour(r));
+    drawFoot(ctx, v, f, r.right, robotColour(r));
+    drawHeading(ctx, v, r);
+    drawRobotExtras(ctx, v, r);
+  }
+  for (const { r } of robots) drawNumber(ctx, v, r);
+  const ballRadius = drawBall(ctx, v, f, truth.ball);
+  return {
+    ball: { ...pixel(v, truth.ball), radius_px: round1(ballRadius), colour: BALL_COLOUR },
+    robots: robots.map(({ r, cone }) => ({
+      team: r.team, player: r.player, active: r.active, colour: robotColour(r),
+      body: { ...pixel(v, r.body), theta: r.body[2] },
+      left: pixel(v, r.left), right: pixel(v, r.right), camera: cone,
+    })),
+  };
+}

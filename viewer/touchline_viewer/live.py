@@ -1,0 +1,70 @@
+"""Live view: subscribes to LCM and pushes the latest truth, game state and robot statuses
+to every connected page, at most ~30 times a second."""
+import asyncio
+
+import lcm
+
+from .decode import CHANNELS, GAME, STATUS, TRUTH, decode
+from .errors import ViewerError
+
+DEFAULT_LCM_URL = "udpm://239.255.76.67:7667?ttl=0"
+SEND_PERIOD_S = 1 / 30
+
+
+class LiveSource:
+    """Owns the LCM instance; call start() inside the running event loop, stop() after."""
+
+    def __init__(self, url: str = DEFAULT_LCM_URL):
+        self.url = url
+        try:
+            self.lc = lcm.LCM(url)
+        except (RuntimeError, OSError, ValueError) as e:
+            hint = " (no multicast route? ip route add 224.0.0.0/4 dev lo)" if url.startswith("udpm") else ""
+            raise ViewerError(f"cannot open LCM at {url}: {e}{hint}") from None
+        for channel in CHANNELS:
+            self.lc.subscribe(channel, self._on_message)
+        self.truth = self.game = None
+        self.statuses: dict = {}
+        self.version = 0  # bumped by every decoded message
+        self.clients: set = set()  # async send callables
+        self._task = None
+
+    def start(self) -> None:
+        loop = asyncio.get_running_loop()
+        loop.add_reader(self.lc.fileno(), self.lc.handle)
+        self._task = loop.create_task(self._broadcast())
+
+    async def stop(self) -> None:
+        asyncio.get_running_loop().remove_reader(self.lc.fileno())
+        if self._task:
+            self._task.cancel()
+            await asyncio.gather(self._task, return_exceptions=True)
+
+    def hello(self) -> dict:
+        return {"mode": "live", "source": self.url}
+
+    def frame(self) -> dict:
+        return {"truth": self.truth, "game": self.game,
+                "status": [self.statuses[k] for k in sorted(self.statuses)], "ack": None}
+
+    def _on_message(self, channel: str, data: bytes) -> None:
+        message = decode(channel, data)  # handlers never throw: a bad message is dropped
+        if message is None:
+            return
+        if channel == TRUTH:
+            self.truth = message
+        elif channel == GAME:
+            self.game = message
+        elif channel == STATUS:
+            self.statuses[(message["team"], message["player"])] = message
+        self.version += 1
+
+    async def _broadcast(self) -> None:
+        sent = 0
+        while True:
+            await asyncio.sleep(SEND_PERIOD_S)
+            if self.version == sent or self.truth is None or not self.clients:
+                continue
+            sent = self.version
+            frame = self.frame()
+            await asyncio.gather(*(send(frame) for send in list(self.clients)), return_exceptions=True)

@@ -1,0 +1,79 @@
+"""An lcm-logger log loaded for replay: its truth frames, game states and robot statuses,
+indexed by simulated time."""
+from bisect import bisect_right
+from pathlib import Path
+
+import lcm
+
+from .decode import GAME, STATUS, TRUTH, decode
+from .errors import ViewerError
+
+LCM_LOG_MAGIC = b"\xed\xa1\xda\x01"  # first bytes of every lcm-logger event
+
+
+class ReplayLog:
+    """Read-only after loading; shared by every replay connection."""
+
+    def __init__(self, name: str, truths: list, games: list, statuses: list):
+        if not truths:
+            raise ViewerError(f"log {name} has no {TRUTH} messages to show")
+        self.name = name
+        self.truths = sorted(truths, key=lambda m: m["utime"])
+        self.utimes = [m["utime"] for m in self.truths]
+        self.games = sorted(games, key=lambda m: m["utime"])
+        self.game_utimes = [m["utime"] for m in self.games]
+        self.statuses = sorted(statuses, key=lambda m: m["utime"])
+        self.status_utimes = [m["utime"] for m in self.statuses]
+        self.robot_count = len({(s["team"], s["player"]) for s in self.statuses})
+
+    @classmethod
+    def load(cls, path: Path) -> "ReplayLog":
+        path = Path(path)
+        if not path.is_file():
+            raise ViewerError(f"log {path}: no such file")
+        with open(path, "rb") as f:
+            if f.read(4) != LCM_LOG_MAGIC:
+                raise ViewerError(f"log {path} is not an lcm-logger log (empty or corrupt)")
+        found = {TRUTH: [], GAME: [], STATUS: []}
+        try:
+            for event in lcm.EventLog(str(path), "r"):
+                if event.channel in found:
+                    message = decode(event.channel, event.data)
+                    if message is not None:
+                        found[event.channel].append(message)
+        except (OSError, ValueError) as e:  # a truncated tail: keep what was read
+            if not found[TRUTH]:
+                raise ViewerError(f"log {path} cannot be read: {e}") from None
+        return cls(path.name, found[TRUTH], found[GAME], found[STATUS])
+
+    @property
+    def count(self) -> int:
+        return len(self.truths)
+
+    @property
+    def t0(self) -> float:
+        return self.utimes[0] / 1e6
+
+    @property
+    def t1(self) -> float:
+        return self.utimes[-1] / 1e6
+
+    def index_at(self, t: float) -> int:
+        """The last frame at or before sim time t (seconds), clamped to the log."""
+        i = bisect_right(self.utimes, round(t * 1e6)) - 1
+        return min(max(i, 0), self.count - 1)
+
+    def frame(self, i: int) -> dict:
+        truth = self.truths[i]
+        g = bisect_right(self.game_utimes, truth["utime"]) - 1
+        return {"truth": truth, "game": self.games[g] if g >= 0 else None,
+                "status": self._statuses_at(truth["utime"])}
+
+    def _statuses_at(self, utime: int) -> list:
+        latest = {}
+        for j in range(bisect_right(self.status_utimes, utime) - 1, -1, -1):
+            s = self.statuses[j]
+            latest.setdefault((s["team"], s["player"]), s)
+            if len(latest) == self.robot_count:
+                break
+        return [latest[k] for k in sorted(latest)]
