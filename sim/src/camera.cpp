@@ -9,7 +9,7 @@ namespace touchline::sim {
 
 float max_camera_distance(const CameraDef& camera, float pitch_rad) {
   const float pitch = std::clamp(pitch_rad, camera.min_pitch_rad, camera.max_pitch_rad);
-  return (pitch - camera.min_pitch_rad) * camera.range_span_mm / (camera.max_pitch_rad - camera.min_pitch_rad) +
+  return (camera.max_pitch_rad - pitch) * camera.range_span_mm / (camera.max_pitch_rad - camera.min_pitch_rad) +
          camera.near_range_mm;
 }
 

@@ -27,7 +27,7 @@ def test_default_is_go_to_ball_with_the_head_on_the_ball():
     assert command.body.actionType == robot.ActionType.WALK
     assert command.body.forward == pytest.approx(300.0)
     assert command.head.yaw == pytest.approx(0.0)
-    assert command.head.pitch == pytest.approx(-0.473333, abs=1e-5)
+    assert command.head.pitch == pytest.approx(0.313333, abs=1e-5)
     assert command.leds.chest == behaviour.BALL_SEEN_CHEST
 
 
@@ -61,7 +61,7 @@ def test_line_up_and_kick_and_track_ball_by_name(monkeypatch):
     use_params(monkeypatch, skill="TrackBall")
     command = behaviour.tick(board((0.0, 0.0, 0.0), ball=(1000.0, 0.0), seen=False, lost=100))
     assert command.body.actionType == robot.ActionType.STAND
-    assert command.head.pitch == pytest.approx(-0.473333, abs=1e-5)  # tracks even when lost
+    assert command.head.pitch == pytest.approx(0.313333, abs=1e-5)  # tracks even when lost
 
 
 def test_every_skill_is_made_with_its_defaults():

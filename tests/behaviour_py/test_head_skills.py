@@ -20,7 +20,7 @@ def ball_at(distance, heading):
     return relative(ORIGIN, distance * math.cos(heading), distance * math.sin(heading))
 
 
-@pytest.mark.parametrize("distance, pitch", [(1000.0, -0.473333), (2500.0, 0.116667)])
+@pytest.mark.parametrize("distance, pitch", [(1000.0, 0.313333), (2500.0, -0.276667)])
 def test_track_ball_points_at_the_ball_with_the_pitch_that_sees_it(distance, pitch):
     head = TrackBall().tick(board(ORIGIN, ball=ball_at(distance, 0.5))).head
     assert head.yaw == pytest.approx(0.5, abs=1e-5)
@@ -30,16 +30,16 @@ def test_track_ball_points_at_the_ball_with_the_pitch_that_sees_it(distance, pit
 
 def test_track_ball_clamps_to_the_joint_limits():
     head = TrackBall().tick(board(ORIGIN, ball=ball_at(4000.0, 2.5))).head
-    assert (head.yaw, head.pitch) == pytest.approx((MAX_HEAD_YAW, MAX_HEAD_PITCH))
+    assert (head.yaw, head.pitch) == pytest.approx((MAX_HEAD_YAW, MIN_HEAD_PITCH))  # far: look up
     head = TrackBall().tick(board(ORIGIN, ball=ball_at(100.0, -2.5))).head
-    assert (head.yaw, head.pitch) == pytest.approx((-MAX_HEAD_YAW, MIN_HEAD_PITCH))
+    assert (head.yaw, head.pitch) == pytest.approx((-MAX_HEAD_YAW, MAX_HEAD_PITCH))  # near: look down
 
 
 def test_track_ball_uses_localisation_when_vision_missed_it():
     blackboard = board(ORIGIN, ball=ball_at(1000.0, 0.5), seen=False, lost=3)
     blackboard.vision.ball = robot.RRCoord(3000.0, -1.0)  # stale: ignored
     head = TrackBall().tick(blackboard).head
-    assert (head.yaw, head.pitch) == pytest.approx((0.5, -0.473333), abs=1e-5)
+    assert (head.yaw, head.pitch) == pytest.approx((0.5, 0.313333), abs=1e-5)
 
 
 def scan_yaws(scan, blackboard, ticks):

@@ -25,17 +25,17 @@ def test_clamp_turn():
 
 
 def test_visible_range_is_the_thesis_formula():
-    assert camera.visibleRange(MIN_HEAD_PITCH) == pytest.approx(1000.0)
-    assert camera.visibleRange(MAX_HEAD_PITCH) == pytest.approx(4000.0)
+    assert camera.visibleRange(MAX_HEAD_PITCH) == pytest.approx(1000.0)  # fully down
+    assert camera.visibleRange(MIN_HEAD_PITCH) == pytest.approx(4000.0)  # fully up
     assert camera.visibleRange(-0.08) == pytest.approx(2500.0)
 
 
-@pytest.mark.parametrize("distance, pitch", [(1000.0, -0.473333), (2500.0, 0.116667)])
+@pytest.mark.parametrize("distance, pitch", [(1000.0, 0.313333), (2500.0, -0.276667)])
 def test_pitch_to_see_inverts_the_formula_with_a_margin(distance, pitch):
     assert camera.pitchToSee(distance) == pytest.approx(pitch, abs=1e-5)
     assert camera.visibleRange(camera.pitchToSee(distance)) == pytest.approx(distance + camera.CAMERA_RANGE_MARGIN)
 
 
 def test_pitch_to_see_clamps_to_the_joint_limits():
-    assert camera.pitchToSee(4000.0) == MAX_HEAD_PITCH
-    assert camera.pitchToSee(0.0) == MIN_HEAD_PITCH
+    assert camera.pitchToSee(4000.0) == MIN_HEAD_PITCH
+    assert camera.pitchToSee(0.0) == MAX_HEAD_PITCH

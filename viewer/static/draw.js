@@ -8,11 +8,11 @@ const CARPET = "#2e7d32";
 const LINE = "#f4f4f4";
 
 // The thesis camera model: a 60 degree cone along body heading + head yaw whose range grows
-// with head pitch, (pitch - MINPITCH) * 3000 / (MAXPITCH - MINPITCH) + 1000 mm.
+// as the head looks up (pitch is + down): (MAXPITCH - pitch) * 3000 / (MAXPITCH - MINPITCH) + 1000 mm.
 export const CAMERA = { fovRad: Math.PI / 3, minPitch: -0.67, maxPitch: 0.51 };
 export function cameraRangeMm(pitch) {
   const { minPitch, maxPitch } = CAMERA;
-  return Math.max(0, (pitch - minPitch) * 3000 / (maxPitch - minPitch) + 1000);
+  return Math.max(0, (maxPitch - pitch) * 3000 / (maxPitch - minPitch) + 1000);
 }
 
 // The mm -> canvas-pixel transform that fits the field and its border into w x h CSS px.

@@ -30,7 +30,7 @@ std::vector<float> scanYaws(Behaviour& scan, const Blackboard& blackboard, int t
 } // namespace
 
 TEST(TrackBallSkill, PointsAtTheBallWithThePitchThatSeesIt) {
-  const float distances[] = {1000.f, 2500.f}, pitches[] = {-0.473333f, 0.116667f};
+  const float distances[] = {1000.f, 2500.f}, pitches[] = {0.313333f, -0.276667f};
   for (int i = 0; i < 2; ++i) {
     const auto head = TrackBall().tick(ballAt(distances[i], 0.5f)).head;
     EXPECT_NEAR(head.yaw, 0.5f, 1e-5f);
@@ -42,10 +42,10 @@ TEST(TrackBallSkill, PointsAtTheBallWithThePitchThatSeesIt) {
 TEST(TrackBallSkill, ClampsToTheJointLimits) {
   auto head = TrackBall().tick(ballAt(4000.f, 2.5f)).head;
   EXPECT_FLOAT_EQ(head.yaw, MAX_HEAD_YAW);
-  EXPECT_FLOAT_EQ(head.pitch, MAX_HEAD_PITCH);
+  EXPECT_FLOAT_EQ(head.pitch, MIN_HEAD_PITCH); // far: look up
   head = TrackBall().tick(ballAt(100.f, -2.5f)).head;
   EXPECT_FLOAT_EQ(head.yaw, -MAX_HEAD_YAW);
-  EXPECT_FLOAT_EQ(head.pitch, MIN_HEAD_PITCH);
+  EXPECT_FLOAT_EQ(head.pitch, MAX_HEAD_PITCH); // near: look down
 }
 
 TEST(TrackBallSkill, UsesLocalisationWhenVisionMissedIt) {
@@ -53,7 +53,7 @@ TEST(TrackBallSkill, UsesLocalisationWhenVisionMissedIt) {
   blackboard.vision.ball = {3000.f, -1.f}; // stale: ignored
   const auto head = TrackBall().tick(blackboard).head;
   EXPECT_NEAR(head.yaw, 0.5f, 1e-5f);
-  EXPECT_NEAR(head.pitch, -0.473333f, 1e-5f);
+  EXPECT_NEAR(head.pitch, 0.313333f, 1e-5f);
 }
 
 TEST(HeadScanSkill, SweepsWithinTheJointLimitsAndReverses) {

@@ -35,19 +35,19 @@ TEST(RobotLimits, ClampTurn) {
 }
 
 TEST(Camera, VisibleRangeIsTheThesisFormula) {
-  EXPECT_NEAR(visibleRange(MIN_HEAD_PITCH), 1000.f, 1e-2f);
-  EXPECT_NEAR(visibleRange(MAX_HEAD_PITCH), 4000.f, 1e-2f);
+  EXPECT_NEAR(visibleRange(MAX_HEAD_PITCH), 1000.f, 1e-2f); // fully down
+  EXPECT_NEAR(visibleRange(MIN_HEAD_PITCH), 4000.f, 1e-2f); // fully up
   EXPECT_NEAR(visibleRange(-0.08f), 2500.f, 1e-2f);
 }
 
 TEST(Camera, PitchToSeeInvertsTheFormulaWithAMargin) {
-  EXPECT_NEAR(pitchToSee(1000.f), -0.473333f, 1e-5f);
-  EXPECT_NEAR(pitchToSee(2500.f), 0.116667f, 1e-5f);
+  EXPECT_NEAR(pitchToSee(1000.f), 0.313333f, 1e-5f);
+  EXPECT_NEAR(pitchToSee(2500.f), -0.276667f, 1e-5f);
   EXPECT_NEAR(visibleRange(pitchToSee(1000.f)), 1000.f + CAMERA_RANGE_MARGIN, 1e-2f);
   EXPECT_NEAR(visibleRange(pitchToSee(2500.f)), 2500.f + CAMERA_RANGE_MARGIN, 1e-2f);
 }
 
 TEST(Camera, PitchToSeeClampsToTheJointLimits) {
-  EXPECT_EQ(pitchToSee(4000.f), MAX_HEAD_PITCH);
-  EXPECT_EQ(pitchToSee(0.f), MIN_HEAD_PITCH);
+  EXPECT_EQ(pitchToSee(4000.f), MIN_HEAD_PITCH);
+  EXPECT_EQ(pitchToSee(0.f), MAX_HEAD_PITCH);
 }

@@ -21,7 +21,7 @@ TEST(SkillBehaviour, GoToBallWithTheHeadOnTheBall) {
   EXPECT_EQ(command.body.actionType, ActionType::WALK);
   EXPECT_NEAR(command.body.forward, 300.f, 1e-3f);
   EXPECT_NEAR(command.head.yaw, 0.f, 1e-5f);
-  EXPECT_NEAR(command.head.pitch, -0.473333f, 1e-5f);
+  EXPECT_NEAR(command.head.pitch, 0.313333f, 1e-5f);
   EXPECT_EQ(command.leds.chest, BALL_SEEN_CHEST);
 }
 
@@ -54,7 +54,7 @@ TEST(SkillBehaviour, LineUpAndKickAndTrackBallByName) {
             ActionType::DRIBBLE);
   const auto command = make_behaviour("TrackBall", {})->tick(board({0, 0, 0}, 1000.f, 0.f, false, 100));
   EXPECT_EQ(command.body.actionType, ActionType::STAND);
-  EXPECT_NEAR(command.head.pitch, -0.473333f, 1e-5f); // tracks even when lost
+  EXPECT_NEAR(command.head.pitch, 0.313333f, 1e-5f); // tracks even when lost
 }
 
 TEST(SkillBehaviour, BadParametersAreRejected) {

@@ -1,7 +1,10 @@
 #pragma once
 // The camera model of thesis 2.2.5 (Algorithm 2.3): a 60-degree field of view centred on
-// the body heading plus head yaw, and a visible range that grows with head pitch:
-// maxCameraDist = (pitch - MINPITCH) * 3000 / (MAXPITCH - MINPITCH) + 1000 mm.
+// the body heading plus head yaw, and a visible range that grows as the head looks up:
+// maxCameraDist = (elevation - MINPITCH) * 3000 / (MAXPITCH - MINPITCH) + 1000 mm. The
+// thesis's pitch grows looking up; the robot API's pitch is + down (the Nao's HeadPitch),
+// so it enters as elevation = MINPITCH + MAXPITCH - pitch: head fully up sees 4000 mm,
+// fully down 1000 mm.
 #include <optional>
 
 #include "touchline/frame.hpp"
@@ -10,10 +13,10 @@ namespace touchline::sim {
 
 struct CameraDef {
   float field_of_view_rad = 1.0471976f; ///< 60 degrees, full width
-  float min_pitch_rad = -0.67f;         ///< MINPITCH: head fully up (Nao joint limit)
-  float max_pitch_rad = 0.51f;          ///< MAXPITCH: head fully down
-  float near_range_mm = 1000.f;         ///< visible range at MINPITCH
-  float range_span_mm = 3000.f;         ///< added range from MINPITCH to MAXPITCH
+  float min_pitch_rad = -0.67f;         ///< head pitch joint limit, fully up (+ is down)
+  float max_pitch_rad = 0.51f;          ///< head pitch joint limit, fully down
+  float near_range_mm = 1000.f;         ///< visible range with the head fully down
+  float range_span_mm = 3000.f;         ///< range gained from fully down to fully up
 };
 
 /// maxCameraDist for a head pitch (clamped to the joint range), mm.
