@@ -2,13 +2,16 @@
 // behaviour) playing in sim_world over LCM. Thin program: options -> Robot -> run_robot.
 #include <csignal>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include <boost/program_options.hpp>
+#include <pybind11/embed.h>
 
 #include "touchline/behaviour/registry.hpp"
 #include "touchline/ini.hpp"
 #include "touchline/lcm/robot_node.hpp"
+#include "touchline/python/python_behaviour.hpp"
 
 namespace po = boost::program_options;
 using namespace touchline;
@@ -27,10 +30,31 @@ behaviour::Params parse_params(const std::vector<std::string>& assignments) {
   return params;
 }
 
+/// The module --behaviour names when it picks the Python behaviour ("py", "py:MODULE").
+std::optional<std::string> python_module(const std::string& behaviour) {
+  if (behaviour == "py") return std::string("behaviour");
+  if (behaviour.rfind("py:", 0) != 0) return std::nullopt;
+  if (behaviour.size() == 3) throw po::error("--behaviour py:MODULE needs a module name");
+  return behaviour.substr(3);
+}
+
+/// "NAME k=v k=v": what the Blackboard's behaviour.skill (and so every snapshot) records.
+std::string describe_behaviour(const std::string& name, const behaviour::Params& params) {
+  std::string text = name;
+  for (const auto& [key, value] : params) text += " " + key + "=" + value;
+  return text;
+}
+
 std::string behaviour_list() {
   std::ostringstream out;
   out << "Behaviours (--behaviour NAME --param key=value ...):\n";
   for (const auto& [name, help] : behaviour::behaviour_help()) out << "  " << name << ": " << help << "\n";
+  out << "  py, py:MODULE: the Python behaviour: MODULE.tick(blackboard) from --python-dir (MODULE\n"
+         "      defaults to behaviour); --param values reach it as the strings robot.params, with\n"
+         "      robot.team and robot.player. Edited .py files there are reloaded while the robot\n"
+         "      plays (looked for every 250 ms of wall time). While the module fails to import,\n"
+         "      raises in tick() or returns anything but robot.All, the robot stands with its\n"
+         "      chest LED magenta (0xff00ff) and the traceback is printed once per change of the files.\n";
   return out.str();
 }
 
@@ -38,9 +62,10 @@ std::string behaviour_list() {
 
 int main(int argc, char** argv) {
   int team = -1, player = -1;
-  std::string behaviour_name = "stand", walk_config;
+  std::string behaviour_name = "stand", walk_config, python_dir = TOUCHLINE_PYTHON_DIR;
   std::vector<std::string> param_args;
   transport::RobotNodeDef node;
+  robot::BehaviourTimingDef timing;
 
   po::options_description options(
       "robot_shim: runs one robot's code in a sim_world match over LCM.\n"
@@ -49,13 +74,22 @@ int main(int argc, char** argv) {
     ("help,h", "print this help and exit")
     ("team", po::value(&team)->required(), "team index, 0 or 1")
     ("player", po::value(&player)->required(), "player number, 1..7 (and within the world's team size)")
-    ("behaviour", po::value(&behaviour_name)->default_value(behaviour_name), "the C++ behaviour to run (see the list below)")
+    ("behaviour", po::value(&behaviour_name)->default_value(behaviour_name),
+     "the behaviour to run: a C++ one, or py / py:MODULE for Python (see the list below)")
     ("param", po::value(&param_args)->composing(), "a behaviour parameter, key=value (repeatable)")
+    ("python-dir", po::value(&python_dir)->default_value(python_dir),
+     "the Python behaviour's folder: first on sys.path, its .py files reloaded when edited")
+    ("charge-cpu", po::bool_switch(&timing.charge_cpu),
+     "charge the behaviour's CPU time to simulated time: a tick using more than one frame "
+     "(33.3 ms) of CPU makes the robot miss frames as on the robot (the last request stays in force)")
     ("walk-config", po::value(&walk_config), "walk parameters file ([walk] section); default: the built-in walk")
     ("lcm-url", po::value(&node.lcm_url)->default_value(node.lcm_url), "LCM provider URL")
     ("join-timeout", po::value(&node.join_timeout_s)->default_value(node.join_timeout_s), "wall seconds to wait for sim_world to accept us")
-    ("world-timeout", po::value(&node.world_timeout_s)->default_value(node.world_timeout_s), "wall seconds of silence from sim_world before exiting");
+    ("world-timeout", po::value(&node.world_timeout_s)->default_value(node.world_timeout_s), "wall seconds of silence from sim_world before exiting")
+    ("snapshot-every", po::value(&node.snapshot_every)->default_value(node.snapshot_every),
+     "publish the Blackboard (as the behaviour saw it) on TL_BLACKBOARD_<team>_<player> every N behaviour ticks; 0: never");
 
+  std::optional<pybind11::scoped_interpreter> interpreter; // only for py; outlives the behaviour
   std::unique_ptr<api::Behaviour> behaviour;
   robot::WalkDef walk;
   try {
@@ -70,8 +104,23 @@ int main(int argc, char** argv) {
     if (player < 1 || player > kMaxTeamSize)
       throw po::error("--player must be 1.." + std::to_string(kMaxTeamSize) + " (got " + std::to_string(player) + ")");
     if (node.join_timeout_s <= 0 || node.world_timeout_s <= 0) throw po::error("timeouts must be > 0");
+    if (node.snapshot_every < 0) throw po::error("--snapshot-every must be >= 0");
     if (!walk_config.empty()) walk = robot::load_walk_def(walk_config);
-    behaviour = behaviour::make_behaviour(behaviour_name, parse_params(param_args));
+    if (const auto module = python_module(behaviour_name)) {
+      // Python's own signal handlers stay off: SIGINT/SIGTERM stop the shim (below); no
+      // program directory on sys.path: the behaviour's modules come from --python-dir alone.
+      interpreter.emplace(/*init_signal_handlers=*/false, 0, nullptr, /*add_program_dir_to_path=*/false);
+      python::PythonBehaviourDef def;
+      def.directory = python_dir;
+      def.module = *module;
+      def.params = parse_params(param_args);
+      def.team = team;
+      def.player = player;
+      def.name = "robot_shim " + std::to_string(team) + "/" + std::to_string(player);
+      behaviour = std::make_unique<python::PythonBehaviour>(std::move(def));
+    } else {
+      behaviour = behaviour::make_behaviour(behaviour_name, parse_params(param_args));
+    }
   } catch (const po::error& e) {
     std::cerr << "robot_shim: " << e.what() << " (see --help)\n";
     return kUsageError;
@@ -81,12 +130,16 @@ int main(int argc, char** argv) {
   } catch (const behaviour::BehaviourError& e) {
     std::cerr << "robot_shim: " << e.what() << "\n";
     return kUsageError;
+  } catch (const python::PythonBehaviourError& e) {
+    std::cerr << "robot_shim: " << e.what() << "\n";
+    return kUsageError;
   }
 
   std::signal(SIGINT, [](int) { transport::request_robot_stop(); });
   std::signal(SIGTERM, [](int) { transport::request_robot_stop(); });
   try {
-    robot::Robot robot({team, player}, walk, std::move(behaviour));
+    robot::Robot robot({team, player}, walk, std::move(behaviour), timing);
+    robot.set_behaviour_name(describe_behaviour(behaviour_name, parse_params(param_args)));
     switch (transport::run_robot(robot, node, std::cerr)) {
       case transport::RobotExit::kMatchOver: return 0;
       case transport::RobotExit::kRejected: return kUsageError;

@@ -11,6 +11,7 @@
 #include "touchline/game_state_t.hpp"
 #include "touchline/join_reply_t.hpp"
 #include "touchline/join_t.hpp"
+#include "touchline/lcm/snapshot.hpp"
 
 namespace touchline::transport {
 
@@ -28,6 +29,7 @@ class RobotNode {
  public:
   RobotNode(robot::Robot& robot, const RobotNodeDef& def, std::ostream& log)
       : robot_(robot), def_(def), log_(log), lcm_(def.lcm_url), act_channel_(act_channel(robot.id())),
+        snapshot_channel_(snapshot_channel(robot.id())),
         name_("robot_shim " + std::to_string(robot.id().team) + "/" + std::to_string(robot.id().player)) {
     if (!lcm_.good())
       throw std::runtime_error("cannot open LCM at " + def.lcm_url +
@@ -36,6 +38,7 @@ class RobotNode {
     lcm_.subscribe(kJoinReplyChannel, &RobotNode::on_join_reply, this);
     lcm_.subscribe(kSenseChannel, &RobotNode::on_sense, this);
     lcm_.subscribe(kGameChannel, &RobotNode::on_game, this);
+    robot_.keep_behaviour_view(def.snapshot_every > 0);
   }
 
   RobotExit run() {
@@ -111,8 +114,17 @@ class RobotNode {
     if (!joined_ || !mine || frame.frame <= last_frame_) return; // not ours yet, or a repeat
     last_frame_ = frame.frame;
     const RobotAct act = robot_.step(frame, *mine);
+    publish_snapshot(frame.frame);
     const act_t out = to_lcm(act, frame.utime, instance_);
     lcm_.publish(act_channel_, &out);
+  }
+
+  /// Before the act, so a recording world logs the snapshot ahead of the answer.
+  void publish_snapshot(int64_t frame) {
+    if (def_.snapshot_every <= 0 || !robot_.behaviour_stats().ticked_last_step) return;
+    if (behaviour_ticks_++ % def_.snapshot_every != 0) return;
+    const blackboard_snapshot_t msg = to_snapshot(robot_.behaviour_view(), robot_.id(), frame);
+    lcm_.publish(snapshot_channel_, &msg);
   }
 
   void on_game(const ::lcm::ReceiveBuffer* buffer, const std::string& channel) {
@@ -142,6 +154,8 @@ class RobotNode {
   std::ostream& log_;
   ::lcm::LCM lcm_;
   std::string act_channel_;
+  std::string snapshot_channel_;
+  int64_t behaviour_ticks_ = 0;
   std::string name_;
   int64_t instance_ = 0;
   bool joined_ = false;

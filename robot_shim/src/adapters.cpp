@@ -26,18 +26,16 @@ void write_perception(const SenseFrame& frame, const RobotSense& sense, api::Bla
   vision.ball = loc.ballPosRR;
 }
 
-namespace {
 int64_t thread_cpu_us() {
   timespec ts{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
   return static_cast<int64_t>(ts.tv_sec) * 1000000 + ts.tv_nsec / 1000;
 }
-} // namespace
 
 void BehaviourAdapter::tick(api::Blackboard& blackboard) {
-  const int64_t start = thread_cpu_us();
+  const int64_t start = clock_();
   blackboard.behaviour.request = behaviour_.tick(blackboard);
-  last_cpu_us_ = thread_cpu_us() - start;
+  last_cpu_us_ = clock_() - start;
 }
 
 } // namespace touchline::robot

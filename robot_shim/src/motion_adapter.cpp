@@ -10,9 +10,14 @@ constexpr float kTickS = kMotionTickUs * 1e-6f;
 float approach(float current, float target, float max_step) {
   return current + std::clamp(target - current, -max_step, max_step);
 }
+
+bool is_kick(api::ActionCommand::ActionType type) {
+  return type == api::ActionCommand::ActionType::KICK || type == api::ActionCommand::ActionType::DRIBBLE;
+}
 } // namespace
 
-MotionAdapter::MotionAdapter(const WalkDef& walk, const HeadDef& head) : walk_(walk), head_(head) {}
+MotionAdapter::MotionAdapter(const WalkDef& walk, const HeadDef& head, const KickDef& kick)
+    : walk_(walk), kick_(kick), feet_(walk_.feet()), head_(head) {}
 
 WalkRequest MotionAdapter::walk_request(const api::ActionCommand::Body& body) const {
   using api::ActionCommand::ActionType;
@@ -35,15 +40,25 @@ EffectorTick MotionAdapter::tick(api::Blackboard& blackboard) {
   const api::ActionCommand::All& request = blackboard.behaviour.request;
   tick_head(request.head);
 
-  const FeetPose before = walk_.feet();
-  walk_.tick(walk_request(request.body), kTickS);
-  EffectorTick out;
-  feet_motion(before, walk_.feet(), out.left, out.right);
-
   auto& motion = blackboard.motion;
+  if (!kick_.running() && is_kick(request.body.actionType)) kick_.start(request.body);
+  FeetPose after;
+  if (kick_.running()) {
+    after = kick_.tick(walk_);
+    motion.active = kick_.request();
+    motion.kickPhase = static_cast<int>(kick_.last_phase());
+  } else {
+    walk_.tick(walk_request(request.body), kTickS);
+    after = walk_.feet();
+    motion.active = request.body;
+    motion.kickPhase = static_cast<int>(KickPhase::kNone);
+  }
+  EffectorTick out;
+  feet_motion(feet_, after, out.left, out.right);
+  feet_ = after;
+
   const Pose2D odometry = walk_.odometry();
   motion.odometry = {odometry.x_mm, odometry.y_mm, odometry.theta_rad};
-  motion.active = request.body;
   motion.headYaw = yaw_;
   motion.headPitch = pitch_;
   motion.standing = walk_.standing();

@@ -65,7 +65,8 @@ TEST(MotionAdapter, HeadMovesTowardsTheRequestAtItsSpeedLimitAndStopsAtTheJointL
 TEST(MotionAdapter, ActionsWithoutAGeneratorYetStand) {
   robot::MotionAdapter motion(walk_def());
   Blackboard blackboard;
-  blackboard.behaviour.request.body.actionType = ActionCommand::ActionType::KICK;
+  // KICK and DRIBBLE have the KickGenerator (test_kick_generator); getting up has none yet.
+  blackboard.behaviour.request.body.actionType = ActionCommand::ActionType::GETUP_FRONT;
   for (int i = 0; i < 30; ++i) {
     const auto tick = motion.tick(blackboard);
     EXPECT_EQ(tick.left.dx_mm, 0.f);

@@ -2,6 +2,7 @@
 // The adapters that write the Blackboard from what the robot senses, one per
 // sub-blackboard, each saying what it reads and what it writes. Behaviour never writes.
 #include <cstdint>
+#include <functional>
 
 #include "touchline/frame.hpp"
 #include "touchline/robot_api/behaviour.hpp"
@@ -16,16 +17,25 @@ void write_game_controller(const SenseFrame& frame, RobotId id, api::Blackboard&
 /// Writes: blackboard.localisation, blackboard.vision.
 void write_perception(const SenseFrame& frame, const RobotSense& sense, api::Blackboard& blackboard);
 
-/// Runs the behaviour once and measures its CPU time on this thread.
-/// Reads: the whole Blackboard (const). Writes: blackboard.behaviour.
+/// A CPU clock in microseconds.
+using CpuClock = std::function<int64_t()>;
+
+/// CPU time this thread has used, microseconds (CLOCK_THREAD_CPUTIME_ID).
+int64_t thread_cpu_us();
+
+/// Runs the behaviour once and measures its CPU time with `clock` (this thread's CPU
+/// clock unless a test injects one). Reads: the whole Blackboard (const). Writes:
+/// blackboard.behaviour.
 class BehaviourAdapter {
  public:
-  explicit BehaviourAdapter(api::Behaviour& behaviour) : behaviour_(behaviour) {}
+  explicit BehaviourAdapter(api::Behaviour& behaviour, CpuClock clock = thread_cpu_us)
+      : behaviour_(behaviour), clock_(clock ? std::move(clock) : CpuClock(thread_cpu_us)) {}
   void tick(api::Blackboard& blackboard);
   int64_t last_cpu_us() const { return last_cpu_us_; }
 
  private:
   api::Behaviour& behaviour_;
+  CpuClock clock_;
   int64_t last_cpu_us_ = 0;
 };
 

@@ -1,9 +1,13 @@
 #pragma once
 // MotionAdapter: the 100 Hz motion thread of the robot. Each tick it reads the behaviour's
 // request from the Blackboard, runs the generator chain (head, then walk for STAND and
-// WALK; other actions stand until their generators land) and hands the feet to the
-// effector. Reads: blackboard.behaviour.request. Writes: blackboard.motion, the effector.
+// WALK, the KickGenerator for KICK and DRIBBLE; other actions stand until their
+// generators land) and hands the feet to the effector. A kick latches: once started it
+// runs to completion whatever the request says meanwhile; a KICK or DRIBBLE request seen
+// after it completes starts another. Reads: blackboard.behaviour.request. Writes:
+// blackboard.motion (active: the latched kick while one runs; kickPhase), the effector.
 #include "touchline/frame.hpp"
+#include "touchline/robot/kick_generator.hpp"
 #include "touchline/robot/walk_cycle.hpp"
 #include "touchline/robot_api/blackboard.hpp"
 
@@ -24,12 +28,13 @@ struct EffectorTick {
 
 class MotionAdapter {
  public:
-  MotionAdapter(const WalkDef& walk, const HeadDef& head = {});
+  MotionAdapter(const WalkDef& walk, const HeadDef& head = {}, const KickDef& kick = {});
 
   /// One 10 ms motion tick.
   EffectorTick tick(api::Blackboard& blackboard);
 
   const WalkCycle& walk() const { return walk_; }
+  const KickGenerator& kick() const { return kick_; }
   float head_yaw() const { return yaw_; }
   float head_pitch() const { return pitch_; }
 
@@ -38,6 +43,8 @@ class MotionAdapter {
   WalkRequest walk_request(const api::ActionCommand::Body& body) const;
 
   WalkCycle walk_;
+  KickGenerator kick_;
+  FeetPose feet_; ///< both feet after the last tick (the walk's, or the kick's mid-swing)
   HeadDef head_;
   float yaw_ = 0, pitch_ = 0;
 };

@@ -1,11 +1,12 @@
 #pragma once
-// A world config file: [field], [physics] and [match] sections (config/spl2011.ini,
+// A world config file: [field], [physics], [match], [camera], [noise] and [sonar] sections (config/spl2011.ini,
 // config/spl2020.ini). Every key is optional; its default is the definition struct's.
 #include <string>
 #include <vector>
 
 #include "touchline/ini.hpp"
 #include "touchline/sim/field.hpp"
+#include "touchline/sim/perception_config.hpp"
 #include "touchline/sim/world.hpp"
 
 namespace touchline::sim {
@@ -22,6 +23,7 @@ struct WorldConfig {
   FieldDef field;
   PhysicsDef physics;
   MatchDef match;
+  PerceptionDef perception;
 };
 
 void bind(IniSchema& schema, FieldDef& def);

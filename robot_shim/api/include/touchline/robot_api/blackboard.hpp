@@ -17,6 +17,7 @@ struct MotionBlackboard {
   ActionCommand::Body active;        ///< the body command being executed
   float headYaw = 0, headPitch = 0;  ///< rad, measured
   bool standing = true;              ///< the walk is not stepping
+  int kickPhase = 0;                 ///< the kick or dribble running: 0 none, 1 prepare, 2 swing, 3 recover
   int64_t ticks = 0;                 ///< motion ticks run
 };
 

@@ -15,6 +15,7 @@ struct RobotNodeDef {
   double join_timeout_s = 60;  ///< wall seconds to wait for sim_world to accept the join
   double world_timeout_s = 30; ///< wall seconds of silence from sim_world before giving up
   int64_t instance = 0;        ///< random id of this process (0: pick one)
+  int snapshot_every = 30;     ///< publish a Blackboard snapshot every N frames the behaviour runs (0: never)
 };
 
 /// Why run_robot returned.

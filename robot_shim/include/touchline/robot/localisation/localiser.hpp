@@ -1,0 +1,53 @@
+#pragma once
+// The robot's localisation, once per camera frame: the pose filter follows the walk's
+// odometry and the landmarks seen, the ball filter the ball seen from the estimated
+// pose; together they write the Blackboard's localisation sub-blackboard.
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "touchline/frame.hpp"
+#include "touchline/robot/localisation/ball_filter.hpp"
+#include "touchline/robot/localisation/field_map.hpp"
+#include "touchline/robot/localisation/pose_filter.hpp"
+#include "touchline/robot_api/blackboard.hpp"
+
+namespace touchline::robot::localisation {
+
+struct LocalisationDef {
+  FieldMap field;
+  PoseFilterDef pose;
+  BallFilterDef ball;
+};
+
+/// Writes robotPos, ballPos, ballPosRR (the ball estimate seen from the pose estimate),
+/// ballLostCount and teamBallPos (our own ball until teammates share theirs).
+void write_localisation(const PoseFilter& pose, const BallFilter& ball, api::LocalisationBlackboard& out);
+
+class Localiser {
+ public:
+  /// `initial`: where the rules place the robot (its touchline spot at the start).
+  Localiser(const LocalisationDef& def, const Pose2D& initial);
+
+  /// One camera frame at simulated time `utime_us`: `odometry` is the walk's
+  /// dead-reckoned pose now (MotionBlackboard::odometry; only its change since the last
+  /// frame is used), `seen` the camera's observations this frame.
+  void frame(int64_t utime_us, const Pose2D& odometry, const std::vector<Observation>& seen);
+
+  /// Re-places the robot at `pose` with the def's initial sigmas (e.g. returning from a
+  /// penalty, where the rules say). The odometry reference is kept.
+  void reset(const Pose2D& pose) { pose_.reset(pose); }
+
+  void write(api::LocalisationBlackboard& out) const { write_localisation(pose_, ball_, out); }
+
+  const PoseFilter& pose_filter() const { return pose_; }
+  const BallFilter& ball_filter() const { return ball_; }
+
+ private:
+  PoseFilter pose_;
+  BallFilter ball_;
+  std::optional<Pose2D> last_odometry_;
+  std::optional<int64_t> last_utime_us_;
+};
+
+} // namespace touchline::robot::localisation

@@ -1,0 +1,112 @@
+#pragma once
+// An extended Kalman filter over the robot's field pose (x, y, theta): predicted with the
+// walk's odometry, corrected with range/bearing observations of landmarks whose ids the
+// camera reports (so the symmetric field is no ambiguity). Each correction is iterated
+// (re-linearised at the corrected pose), which keeps a near landmark seen from a poor
+// guess from making the filter confident in a wrong pose. Outliers are gated. Plain
+// arrays in the interface; the matrix algebra (Eigen) stays in the .cpp.
+#include <array>
+#include <cstdint>
+
+#include "touchline/frame.hpp"
+#include "touchline/robot/localisation/field_map.hpp"
+
+namespace touchline::robot::localisation {
+
+/// Noise models and thresholds of the pose filter.
+struct PoseFilterDef {
+  // Odometry (process) noise. Variances grow with the motion itself, per millimetre or
+  // radian rather than per call, so the result does not depend on how often predict runs.
+  double odo_xy_var_per_mm = 5.0;      ///< mm^2 of variance along each robot-frame axis per mm walked (sigma ~70 mm after 1 m)
+  double odo_theta_var_per_rad = 0.01; ///< rad^2 per rad turned (sigma ~0.1 rad after 1 rad)
+  double odo_theta_var_per_mm = 1e-5;  ///< rad^2 per mm walked: slipping feet turn the body (sigma ~0.1 rad after 1 m)
+  double odo_xy_var_per_call = 0.25;   ///< mm^2 per predict even standing still (pushes, sway)
+  double odo_theta_var_per_call = 1e-6;///< rad^2 per predict even standing still
+
+  // Landmark (measurement) noise: range error grows with distance, as a camera's does.
+  double range_sigma_mm = 50.0;        ///< mm, range sigma at zero distance
+  double range_sigma_per_mm = 0.1;     ///< range sigma per mm of distance (10 %)
+  double bearing_sigma_rad = 0.05;     ///< rad, bearing sigma at zero distance
+  double bearing_sigma_per_mm = 1e-5;  ///< rad per mm of distance (0.01 rad per metre)
+  double min_range_mm = 100.0;         ///< closer observations are ignored (bearing is meaningless at the body centre)
+  int update_iterations = 5;           ///< iterated-EKF re-linearisations per observation at most (1: plain EKF)
+
+  // Outliers.
+  double gate_mahalanobis_sq = 13.8;   ///< squared Mahalanobis distance beyond which an observation is rejected (chi^2, 2 dof, 99.9 %)
+  int max_rejections_in_a_row = 10;    ///< this many rejections with no acceptance between: the pose itself must be wrong (pushed, picked up), so ...
+  double lost_sigma_xy_mm = 500.0;     ///< ... add this much position sigma (mm) ...
+  double lost_sigma_theta_rad = 0.5;   ///< ... and heading sigma (rad) to the covariance.
+
+  // A pose known from the rules (the robot's start on its touchline, a penalty's return).
+  double initial_sigma_xy_mm = 300.0;  ///< mm: how far the robot may stand from where the rules place it
+  double initial_sigma_theta_rad = 0.3;///< rad
+};
+
+/// Row-major 3x3 covariance of (x mm, y mm, theta rad).
+using PoseCovariance = std::array<double, 9>;
+
+/// A covariance with independent x, y, theta.
+PoseCovariance diagonal_covariance(double sigma_x_mm, double sigma_y_mm, double sigma_theta_rad);
+
+/// Motion in the robot frame of its start (+x forward, +y left) since the last predict.
+struct OdometryDelta {
+  double dx_mm = 0;
+  double dy_mm = 0;
+  double dtheta_rad = 0;
+};
+
+/// The robot-frame motion from odometry pose `before` to odometry pose `after` (both in
+/// the walk's odometry frame, e.g. MotionBlackboard::odometry at two frames).
+OdometryDelta odometry_delta(const Pose2D& before, const Pose2D& after);
+
+enum class UpdateResult : int8_t {
+  kAccepted,  ///< the observation corrected the estimate
+  kRejected,  ///< its innovation failed the gate: an outlier (or the estimate is off)
+  kIgnored,   ///< not a known landmark, or too close to use
+};
+
+struct PoseFilterStats {
+  int64_t accepted = 0;
+  int64_t rejected = 0;
+  int64_t ignored = 0;
+  int64_t inflations = 0;  ///< times max_rejections_in_a_row widened the covariance
+  double last_mahalanobis_sq = 0; ///< of the last gated observation
+};
+
+class PoseFilter {
+ public:
+  /// Starts at `initial` with the def's initial sigmas (a pose known from the rules).
+  explicit PoseFilter(FieldMap field = {}, PoseFilterDef def = {}, const Pose2D& initial = {});
+
+  /// Re-initialises at `pose` with `covariance`.
+  void reset(const Pose2D& pose, const PoseCovariance& covariance);
+  /// Re-initialises at `pose` with the def's initial sigmas.
+  void reset(const Pose2D& pose);
+
+  /// Moves the estimate by the odometry's motion and grows the covariance with it.
+  void predict(const OdometryDelta& delta);
+  /// Corrects the estimate with one observation (robot frame). Ball and robot
+  /// observations are ignored.
+  UpdateResult update(const Observation& observation);
+
+  /// The estimate, theta in [-pi, pi).
+  Pose2D pose() const;
+  const PoseCovariance& covariance() const { return covariance_; }
+  double sigma_x_mm() const;
+  double sigma_y_mm() const;
+  double sigma_theta_rad() const;
+
+  const PoseFilterStats& stats() const { return stats_; }
+  const FieldMap& field() const { return field_; }
+  const PoseFilterDef& def() const { return def_; }
+
+ private:
+  FieldMap field_;
+  PoseFilterDef def_;
+  std::array<double, 3> mean_{};  ///< x mm, y mm, theta rad (wrapped)
+  PoseCovariance covariance_{};
+  PoseFilterStats stats_;
+  int rejections_in_a_row_ = 0;
+};
+
+} // namespace touchline::robot::localisation

@@ -1,0 +1,307 @@
+#include "touchline/python/python_behaviour.hpp"
+
+#include <sys/stat.h>
+
+#include <chrono>
+#include <initializer_list>
+#include <iostream>
+#include <sstream>
+
+#include <pybind11/embed.h>
+#include <pybind11/stl.h>
+
+#include "touchline/python/robot_module.hpp"
+
+namespace py = pybind11;
+
+// `import robot` inside the shim: the same bindings as the extension module, built in.
+// Built-in modules come before sys.path, so a robot.py or robot.so there never shadows it.
+PYBIND11_EMBEDDED_MODULE(robot, m) { touchline::python::define_robot_module(m); }
+
+namespace touchline::python {
+
+namespace AC = api::ActionCommand;
+
+api::ActionCommand::All error_request() {
+  AC::All request;
+  request.body = AC::stand();
+  request.leds.chest = kErrorChestLed;
+  return request;
+}
+
+namespace {
+
+/// The PythonBehaviour whose modules and robot.params are in sys.modules and `robot` now.
+PythonBehaviour* g_active = nullptr;
+
+int64_t to_ns(const timespec& t) { return static_cast<int64_t>(t.tv_sec) * 1000000000 + t.tv_nsec; }
+
+/// Whether a sys.modules entry was loaded from under `prefix` (a directory ending in '/').
+/// String prefixes suffice: modules found through our sys.path entry carry its spelling.
+bool loaded_from(py::handle module, const std::string& prefix) {
+  auto under = [&](py::handle path) {
+    return py::isinstance<py::str>(path) && path.cast<std::string>().compare(0, prefix.size(), prefix) == 0;
+  };
+  try {
+    if (py::hasattr(module, "__file__") && under(module.attr("__file__"))) return true;
+    if (py::hasattr(module, "__path__")) // packages, namespace packages included
+      for (py::handle entry : module.attr("__path__"))
+        if (under(entry)) return true;
+  } catch (const py::error_already_set&) {
+    // not a module we know how to read: not ours
+  }
+  return false;
+}
+
+/// Names of the sys.modules entries loaded from under `prefix`.
+py::list module_names_under(const py::module_& sys, const std::string& prefix) {
+  py::list names;
+  for (auto [name, module] : py::dict(sys.attr("modules")))
+    if (loaded_from(module, prefix)) names.append(name);
+  return names;
+}
+
+std::string type_name(py::handle value) {
+  if (value.is_none()) return "None";
+  const py::handle type = py::type::handle_of(value);
+  const auto qualname = type.attr("__qualname__").cast<std::string>();
+  const auto module = type.attr("__module__").cast<std::string>();
+  return module == "builtins" ? qualname : module + "." + qualname;
+}
+
+} // namespace
+
+bool PythonBehaviour::FileStamp::operator==(const FileStamp& other) const {
+  return mtime_ns == other.mtime_ns && ctime_ns == other.ctime_ns && size == other.size;
+}
+
+PythonBehaviour::Files PythonBehaviour::scan_python_files(const std::filesystem::path& directory) {
+  namespace fs = std::filesystem;
+  Files files;
+  std::error_code ec;
+  fs::recursive_directory_iterator it(directory, fs::directory_options::skip_permission_denied, ec);
+  for (; !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+    const fs::path& path = it->path();
+    const std::string name = path.filename().string();
+    std::error_code type_ec;
+    if (it->is_directory(type_ec)) {
+      if (name == "__pycache__" || name.front() == '.') it.disable_recursion_pending();
+      continue;
+    }
+    struct stat st {};
+    if (path.extension() != ".py" || name.front() == '.' || ::stat(path.c_str(), &st) != 0) continue;
+    files[path.string()] = {to_ns(st.st_mtim), to_ns(st.st_ctim), static_cast<uintmax_t>(st.st_size)};
+  }
+  return files;
+}
+
+/// The interpreter objects one PythonBehaviour holds. Hidden, like pybind11's own types.
+struct __attribute__((visibility("hidden"))) PythonBehaviour::Python {
+  py::module_ sys, robot, traceback, importlib;
+  py::dict params;         ///< robot.params while this behaviour runs
+  py::dict stashed;        ///< this behaviour's modules while another PythonBehaviour runs
+  py::object module, tick; ///< null while the module failed to load
+
+  /// After the interpreter has gone, handles must be dropped without touching it.
+  void abandon() {
+    for (py::object* o : std::initializer_list<py::object*>{&sys, &robot, &traceback, &importlib, &params,
+                                                            &stashed, &module, &tick})
+      o->release();
+  }
+};
+
+PythonBehaviour::PythonBehaviour(PythonBehaviourDef def) : def_(std::move(def)) {
+  if (!Py_IsInitialized())
+    throw PythonBehaviourError("the Python behaviour needs a running interpreter (pybind11::scoped_interpreter)");
+  std::error_code ec;
+  const auto directory = std::filesystem::canonical(def_.directory, ec);
+  if (ec || !std::filesystem::is_directory(directory))
+    throw PythonBehaviourError("python dir '" + def_.directory.string() + "' is not a directory");
+  def_.directory = directory;
+  prefix_ = directory.string() + "/";
+  if (def_.module.empty()) throw PythonBehaviourError("empty Python module name");
+
+  py_ = std::make_unique<Python>();
+  try {
+    py_->sys = py::module_::import("sys");
+    py_->robot = py::module_::import("robot");
+    py_->traceback = py::module_::import("traceback");
+    py_->importlib = py::module_::import("importlib.machinery");
+    // No .pyc from us: its freshness check uses whole seconds, so a second edit within
+    // the same second (of the same size) would load the stale bytecode on reload.
+    py_->sys.attr("dont_write_bytecode") = true;
+    for (const auto& [key, value] : def_.params) py_->params[py::str(key)] = py::str(value);
+    activate();
+    // The module must come from the directory, not from anywhere else on sys.path.
+    const std::string top = def_.module.substr(0, def_.module.find('.'));
+    py::list search_path;
+    search_path.append(py::str(def_.directory.string()));
+    if (py_->importlib.attr("PathFinder").attr("find_spec")(top, search_path).is_none())
+      throw PythonBehaviourError("no Python module '" + def_.module + "' in " + def_.directory.string());
+  } catch (const py::error_already_set& e) {
+    leave();
+    throw PythonBehaviourError(std::string("cannot start the Python behaviour: ") + e.what());
+  } catch (...) {
+    leave();
+    throw;
+  }
+
+  files_ = scan_python_files(def_.directory);
+  next_check_us_ = now_us() + def_.reload_check_interval_us;
+  healthy_ = load(/*starting=*/true);
+  if (py_->module && !py_->tick) { // imported cleanly but cannot be ticked: a usage error
+    leave();
+    throw PythonBehaviourError("Python module '" + def_.module + "' has no tick(blackboard) function");
+  }
+}
+
+PythonBehaviour::~PythonBehaviour() {
+  if (!Py_IsInitialized()) { // destroyed after the interpreter: nothing left to tidy
+    py_->abandon();
+    if (g_active == this) g_active = nullptr;
+    return;
+  }
+  try {
+    leave();
+  } catch (const std::exception&) {
+    if (g_active == this) g_active = nullptr; // tidying failed; never throw from here
+  }
+}
+
+void PythonBehaviour::activate() {
+  if (g_active == this) return;
+  if (g_active) g_active->stash();
+  py::dict modules = py_->sys.attr("modules");
+  for (auto [name, module] : py_->stashed) modules[name] = module;
+  py_->stashed = py::dict();
+  py_->robot.attr("params") = py_->params;
+  py_->robot.attr("team") = def_.team;
+  py_->robot.attr("player") = def_.player;
+  // First on sys.path, so that a reload finds this directory's modules before others'.
+  py::list path = py_->sys.attr("path");
+  const py::str dir(def_.directory.string());
+  while (path.contains(dir)) path.attr("remove")(dir);
+  path.insert(0, dir);
+  g_active = this;
+}
+
+void PythonBehaviour::stash() {
+  py::dict modules = py_->sys.attr("modules");
+  for (py::handle name : module_names_under(py_->sys, prefix_)) py_->stashed[name] = modules.attr("pop")(name);
+  g_active = nullptr;
+}
+
+void PythonBehaviour::leave() {
+  if (g_active == this) stash();
+  py_->stashed = py::dict();
+  py::list path = py_->sys.attr("path");
+  const py::str dir(def_.directory.string());
+  if (path.contains(dir)) path.attr("remove")(dir);
+}
+
+int64_t PythonBehaviour::now_us() const {
+  if (def_.wall_clock_us) return def_.wall_clock_us();
+  using namespace std::chrono;
+  return duration_cast<microseconds>(steady_clock::now().time_since_epoch()).count();
+}
+
+bool PythonBehaviour::load(bool starting) {
+  py_->module = py::object();
+  py_->tick = py::object();
+  try {
+    // Through the C API, which cuts importlib's own frames from the traceback.
+    py_->module = py::module_::import(def_.module.c_str());
+  } catch (const py::error_already_set& e) {
+    report_once("importing " + def_.module + " failed", &e);
+    return false;
+  }
+  if (py::hasattr(py_->module, "tick") && PyCallable_Check(py_->module.attr("tick").ptr())) {
+    py_->tick = py_->module.attr("tick");
+  } else {
+    if (!starting) report_once("module '" + def_.module + "' has no tick(blackboard) function", nullptr);
+    return false; // at start the constructor throws instead
+  }
+  ++loads_;
+  return true;
+}
+
+void PythonBehaviour::check_files() {
+  auto files = scan_python_files(def_.directory);
+  if (files == files_) return;
+  std::string changed;
+  auto note = [&](const std::string& path) {
+    changed += (changed.empty() ? "" : ", ") + std::filesystem::path(path).lexically_relative(def_.directory).string();
+  };
+  for (const auto& [path, stamp] : files)
+    if (auto old = files_.find(path); old == files_.end() || !(old->second == stamp)) note(path);
+  for (const auto& [path, stamp] : files_)
+    if (!files.count(path)) note(path);
+  files_ = std::move(files);
+
+  // Drop every module loaded from the directory, so that edited helpers reload too.
+  py::dict modules = py_->sys.attr("modules");
+  for (py::handle name : module_names_under(py_->sys, prefix_)) modules.attr("pop")(name);
+  py::module_::import("importlib").attr("invalidate_caches")(); // new files must be found
+  reported_ = false;
+  healthy_ = load(/*starting=*/false);
+  if (healthy_) log_lines("reloaded " + def_.module + " (changed: " + changed + ")\n");
+}
+
+api::ActionCommand::All PythonBehaviour::tick(const api::Blackboard& blackboard) {
+  try {
+    activate();
+    if (now_us() >= next_check_us_) {
+      next_check_us_ = now_us() + def_.reload_check_interval_us;
+      check_files();
+    }
+    if (!py_->tick) {
+      healthy_ = false;
+      return error_request();
+    }
+    const py::object result = py_->tick(py::cast(&blackboard, py::return_value_policy::reference));
+    if (!py::isinstance<AC::All>(result)) {
+      healthy_ = false;
+      report_once("tick() returned " + type_name(result) + ", expected robot.All", nullptr);
+      return error_request();
+    }
+    healthy_ = true;
+    return result.cast<AC::All>();
+  } catch (const py::error_already_set& e) {
+    report_once("tick() raised", &e);
+  } catch (const std::exception& e) {
+    report_once(std::string("Python behaviour failed: ") + e.what(), nullptr);
+  } catch (...) { // whatever it was, the robot stands and the shim plays on
+    report_once("Python behaviour failed", nullptr);
+  }
+  healthy_ = false;
+  return error_request();
+}
+
+void PythonBehaviour::report_once(const std::string& what, const py::error_already_set* error) {
+  if (reported_) return;
+  reported_ = true;
+  std::string text = what + " (standing, chest LED magenta until fixed)";
+  if (error) {
+    text += ":\n";
+    try {
+      for (py::handle line : py_->traceback.attr("format_exception")(error->type(), error->value(),
+                                                                      error->trace() ? error->trace() : py::none()))
+        text += line.cast<std::string>();
+    } catch (const py::error_already_set&) {
+      text += std::string(error->what()) + "\n";
+    }
+  } else {
+    text += "\n";
+  }
+  log_lines(text);
+}
+
+void PythonBehaviour::log_lines(const std::string& text) {
+  std::ostream& log = def_.log ? *def_.log : std::cerr;
+  std::ostringstream out; // one write, so that robots sharing a terminal do not interleave lines
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) out << def_.name << ": " << line << "\n";
+  log << out.str() << std::flush;
+}
+
+} // namespace touchline::python

@@ -1,0 +1,57 @@
+#include "touchline/robot/localisation/field_map.hpp"
+
+namespace touchline::robot::localisation {
+
+namespace {
+constexpr int kGoalPosts = 4, kFieldCorners = 4, kCentreLineEnds = 2, kPenaltyMarks = 2;
+
+int landmark_count(ObjectKind kind) {
+  switch (kind) {
+    case ObjectKind::kGoalPost: return kGoalPosts;
+    case ObjectKind::kFieldCorner: return kFieldCorners;
+    case ObjectKind::kCentreLineEnd: return kCentreLineEnds;
+    case ObjectKind::kPenaltyMark: return kPenaltyMarks;
+    default: return 0;
+  }
+}
+} // namespace
+
+bool is_landmark(ObjectKind kind) { return landmark_count(kind) > 0; }
+
+std::optional<FieldPoint> FieldMap::landmark(ObjectKind kind, int id) const {
+  if (id < 0 || id >= landmark_count(kind)) return std::nullopt;
+  const double half_length = length_mm / 2.0, half_width = width_mm / 2.0;
+  switch (kind) {
+    case ObjectKind::kGoalPost: {
+      // Team 0's goal is at -x; looking at it from the centre, its left post is at -y.
+      // Looking at team 1's goal (+x), left is +y. Ids 0, 1: team 0's left, right.
+      const bool team1_goal = id >= 2;
+      const bool left = id % 2 == 0;
+      const double side = team1_goal ? 1.0 : -1.0;
+      return FieldPoint{side * half_length, side * (left ? 1.0 : -1.0) * goal_width_mm / 2.0};
+    }
+    case ObjectKind::kFieldCorner: {
+      // Counter-clockwise from (-x, -y): (-,-), (+,-), (+,+), (-,+).
+      const double xs[kFieldCorners] = {-1, 1, 1, -1};
+      const double ys[kFieldCorners] = {-1, -1, 1, 1};
+      return FieldPoint{xs[id] * half_length, ys[id] * half_width};
+    }
+    case ObjectKind::kCentreLineEnd:
+      return FieldPoint{0.0, (id == 0 ? -1.0 : 1.0) * half_width};
+    case ObjectKind::kPenaltyMark: {
+      const double side = id == 0 ? -1.0 : 1.0;
+      return FieldPoint{side * (half_length - penalty_mark_distance_mm), 0.0};
+    }
+    default: return std::nullopt;
+  }
+}
+
+std::vector<Landmark> FieldMap::landmarks() const {
+  std::vector<Landmark> all;
+  for (ObjectKind kind : {ObjectKind::kGoalPost, ObjectKind::kFieldCorner, ObjectKind::kCentreLineEnd,
+                          ObjectKind::kPenaltyMark})
+    for (int id = 0; id < landmark_count(kind); ++id) all.push_back({kind, id, *landmark(kind, id)});
+  return all;
+}
+
+} // namespace touchline::robot::localisation

@@ -1,0 +1,32 @@
+#include "touchline/robot/localisation/localiser.hpp"
+
+namespace touchline::robot::localisation {
+
+void write_localisation(const PoseFilter& pose, const BallFilter& ball, api::LocalisationBlackboard& out) {
+  const Pose2D robot = pose.pose();
+  out.robotPos = {robot.x_mm, robot.y_mm, robot.theta_rad};
+  const FieldPoint b = ball.position();
+  out.ballPos = {static_cast<float>(b.x_mm), static_cast<float>(b.y_mm), 0.f};
+  out.ballPosRR = ball.relative_to(robot);
+  out.ballLostCount = ball.lost_count();
+  out.teamBallPos = out.ballPos;
+}
+
+Localiser::Localiser(const LocalisationDef& def, const Pose2D& initial)
+    : pose_(def.field, def.pose, initial), ball_(def.ball) {}
+
+void Localiser::frame(int64_t utime_us, const Pose2D& odometry, const std::vector<Observation>& seen) {
+  if (last_odometry_) pose_.predict(odometry_delta(*last_odometry_, odometry));
+  last_odometry_ = odometry;
+  const double dt_s = last_utime_us_ ? static_cast<double>(utime_us - *last_utime_us_) * 1e-6 : 0.0;
+  last_utime_us_ = utime_us;
+
+  // Landmarks first, so the ball is placed from this frame's corrected pose.
+  for (const Observation& o : seen)
+    if (is_landmark(o.kind)) pose_.update(o);
+  ball_.predict(dt_s);
+  for (const Observation& o : seen)
+    if (o.kind == ObjectKind::kBall) ball_.update(o, pose_.pose(), pose_.covariance());
+}
+
+} // namespace touchline::robot::localisation

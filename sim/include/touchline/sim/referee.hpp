@@ -1,0 +1,177 @@
+#pragma once
+// The referee: a built-in game controller playing the SPL 2011 rules, simplified (the
+// rules and their switches: rules.hpp). Pure: the match hands it the truth once per
+// camera frame, after the world advanced, and carries out what it decides (where robots
+// and the ball go, whose motions to ignore); it sends nothing and reads no clock but the
+// input's utime, so the same inputs give the same decisions, bit for bit.
+//
+// States: INITIAL (initial_s) -> READY (ready_s) -> SET (set_s) -> PLAYING, timed exactly
+// from the utime each state began, whatever the update rate. A goal gives READY again,
+// kick-off to the conceding team. The clock (secs_remaining) runs only in PLAYING; after
+// half_s of it the half ends: INITIAL of the second half, kick-off to the team that did
+// not kick off the first, or FINISHED after the second. Teams keep their sides.
+#include <array>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "touchline/frame.hpp"
+#include "touchline/sim/field.hpp"
+#include "touchline/sim/rules.hpp"
+#include "touchline/sim/world.hpp"
+
+namespace touchline::sim {
+
+/// One robot as the referee sees it.
+struct RobotOnField {
+  RobotId id;
+  Pose2D body;        ///< field frame, truth
+  bool active = true; ///< false while the match treats it as crashed: it is never penalised
+};
+
+/// What the match tells the referee each camera frame.
+struct RefereeInput {
+  int64_t utime = 0; ///< simulated time now, microseconds; never decreasing
+  BallTruth ball;
+  std::vector<RobotOnField> robots; ///< every robot the match has placed, penalised ones included
+  int last_touch_team = -1;         ///< team whose robot touched the ball last, -1: unknown
+};
+
+enum class PenaltyKind : int8_t {
+  kNone = 0,
+  kPushing = 1,         ///< pushed an opponent while not contesting the ball
+  kIllegalDefender = 2, ///< field player in its own goal box while PLAYING
+  kLeavingField = 3,    ///< body off the field by more than leave_field_margin_mm
+};
+const char* to_string(PenaltyKind kind);
+
+struct Penalty {
+  RobotId robot;
+  PenaltyKind kind = PenaltyKind::kNone;
+  int64_t since_utime = 0;
+  int64_t until_utime = 0; ///< re-enters at the first update at or after this
+};
+
+struct StateChange {
+  GameState from = GameState::kInitial, to = GameState::kInitial;
+  int64_t utime = 0; ///< when it happened (a timed change: exactly when its state ran out)
+};
+
+struct GoalScored {
+  int team = 0; ///< the scoring team
+  int64_t utime = 0;
+};
+
+/// Put the robot down here, feet at rest (Match/World::place_robot).
+struct RobotPlacement {
+  RobotId robot;
+  Pose2D pose;
+};
+
+struct BallPlacement {
+  enum class Why : int8_t { kKickOff, kBallOut };
+  Why why = Why::kKickOff;
+  float x_mm = 0, y_mm = 0; ///< put it here at rest
+};
+
+/// What one update decided, in the order it happened. Placements are in the order to
+/// apply them (a robot may appear twice: the later wins).
+struct RefereeDecision {
+  std::vector<StateChange> state_changes;
+  std::vector<GoalScored> goals;
+  std::vector<Penalty> penalties;          ///< given in this update; each robot's removal is in placements
+  std::vector<RobotId> released;           ///< served their time; each one's re-entry is in placements
+  std::vector<RobotPlacement> placements;  ///< removals, re-entries, SET's manual placements
+  std::optional<BallPlacement> ball;
+  /// Contesting the ball, in contact with an opponent nearer it: the thesis' heuristic
+  /// stops this robot's feet (2.2.4); the match may hold its motions for the frame.
+  std::vector<RobotId> stopped;
+  bool empty() const;
+};
+
+class Referee {
+ public:
+  /// `team_size` spaces the benches; `ball_diameter_mm` decides when the ball is wholly
+  /// over a line. Throws ConfigError if `rules` do not validate.
+  Referee(const Field& field, const RulesDef& rules, int team_size, float ball_diameter_mm);
+
+  /// Once per camera frame, after the world advanced (any rate works: the rules are timed
+  /// by utime, not by calls). The first call starts INITIAL. std::invalid_argument if
+  /// utime goes back.
+  RefereeDecision update(const RefereeInput& input);
+
+  GameInfo info() const;
+  GameState state() const { return state_; }
+  bool penalised(RobotId id) const { return penalties_.count(id) != 0; }
+  std::optional<Penalty> penalty(RobotId id) const;
+  /// Whether the match should apply the robot's foot motions: READY or PLAYING and not
+  /// penalised. (SPL robots stand still in INITIAL, SET and FINISHED.)
+  bool may_move(RobotId id) const;
+
+  /// The canonical kick-off position (READY's target; where manual placement puts a
+  /// robot). Team 0 on the -x half facing +x, team 1 the same turned 180 degrees about
+  /// the centre spot. Player 1, the goalie, in its goal box; player 2 just behind the
+  /// centre spot when kicking off, else outside the centre circle; 3..7 between the goal
+  /// box and the centre circle.
+  Pose2D kickoff_position(RobotId id, bool kicking_off) const;
+  /// Whether `body` is a legal place to stand at kick-off: inside the field on the own
+  /// half, a field player outside its goal box, the defending team outside the circle.
+  bool legal_kickoff_position(RobotId id, const Pose2D& body, bool kicking_off) const;
+  /// Where a penalised robot waits: on the carpet beyond its own half's touchline
+  /// (team 0: -y), one spot per player, facing the field.
+  Pose2D bench_position(RobotId id) const;
+  /// Where a robot re-enters (SPL): on the touchline of its own half, at the penalty
+  /// mark's distance from its goal line, on the touchline farther from the ball, facing
+  /// into the field.
+  Pose2D reentry_position(RobotId id, float ball_x_mm, float ball_y_mm) const;
+
+ private:
+  using Robots = std::vector<RobotOnField>;
+
+  // Clock and states (referee.cpp).
+  void run_clock(int64_t now, const BallTruth& ball, Robots& robots, RefereeDecision& d);
+  int64_t next_timed_event() const;
+  void on_timer(int64_t at, const BallTruth& ball, Robots& robots, RefereeDecision& d);
+  void enter(GameState to, int64_t at, RefereeDecision& d);
+  void end_half(int64_t at, const BallTruth& ball, Robots& robots, RefereeDecision& d);
+  int64_t half_us() const;
+
+  // Ball (referee_ball.cpp).
+  bool check_goal(const RefereeInput& in, RefereeDecision& d);
+  void check_ball_out(const RefereeInput& in, RefereeDecision& d) const;
+  void replace_ball_for_kickoff(const BallTruth& ball, RefereeDecision& d) const;
+
+  // Penalties and placements (referee_penalties.cpp, referee_positions.cpp).
+  void release_served(int64_t now, const BallTruth& ball, Robots& robots, RefereeDecision& d);
+  void release(RobotId id, const BallTruth& ball, Robots& robots, RefereeDecision& d);
+  void penalise(RobotId id, PenaltyKind kind, int64_t now, RefereeDecision& d);
+  void check_leaving_field(int64_t now, const Robots& robots, RefereeDecision& d);
+  void check_illegal_defenders(int64_t now, const Robots& robots, RefereeDecision& d);
+  void check_collisions(int64_t now, const BallTruth& ball, const Robots& robots, RefereeDecision& d);
+  void place_for_kickoff(Robots& robots, RefereeDecision& d) const;
+  Pose2D free_reentry_position(RobotId id, const BallTruth& ball, const Robots& robots) const;
+  bool may_be_penalised(const RobotOnField& r) const;
+
+  Field field_;
+  RulesDef rules_;
+  int team_size_;
+  float ball_radius_mm_;
+
+  bool started_ = false;
+  GameState state_ = GameState::kInitial;
+  bool first_half_ = true;
+  int kickoff_team_ = 0;
+  std::array<int, 2> score_{{0, 0}};
+  bool first_kickoff_taken_ = false; ///< the match placed the first kick-off's ball; later ones are ours
+  int64_t clock_utime_ = 0;          ///< the last update's utime
+  int64_t state_since_utime_ = 0;
+  int64_t played_us_ = 0;            ///< PLAYING time in this half
+
+  std::map<RobotId, Penalty> penalties_;
+  /// Last pushing penalty of each pair of opponents, (lower id, higher id): the cooldown.
+  std::map<std::pair<RobotId, RobotId>, int64_t> last_push_utime_;
+};
+
+} // namespace touchline::sim

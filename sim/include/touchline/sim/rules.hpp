@@ -1,0 +1,42 @@
+#pragma once
+// The rules the referee plays by (SPL 2011, simplified), read from the [rules] section of
+// a world config. Every duration is simulated time; every switch turns one rule off
+// without touching the others (experiments that want, say, no pushing penalties).
+#include "touchline/ini.hpp"
+#include "touchline/sim/collision.hpp"
+
+namespace touchline::sim {
+
+struct RulesDef {
+  // --- game states and the clock ---
+  float initial_s = 1.f;   ///< INITIAL at the start of each half before READY, s (0: READY at once)
+  float ready_s = 45.f;    ///< READY: robots walk to their kick-off positions, s (SPL: 45)
+  float set_s = 5.f;       ///< SET: robots stand still until the kick-off whistle, s
+  float half_s = 600.f;    ///< playing time of one half, s; the clock runs only in PLAYING
+  int first_kickoff_team = 0; ///< kicks off the first half (0 or 1); the other team kicks off the second
+
+  // --- penalties ---
+  float removal_s = 30.f;  ///< time a penalised robot spends off the field, s (SPL 2011: 30)
+  bool pushing = true;           ///< penalise the pusher of an opponent (thesis figure 2.5)
+  bool illegal_defender = true;  ///< penalise a field player in its own goal box while PLAYING
+  bool leaving_field = true;     ///< penalise a robot whose body is off the field (READY, SET, PLAYING)
+  CollisionDef collision;        ///< contact and contest distances of the pushing heuristic
+  float pushing_cooldown_s = 5.f; ///< after a pushing penalty, the same pair gives no other for this long, s
+  float leave_field_margin_mm = 200.f; ///< body centre this far past a line's outer edge has left, mm
+                                       ///< (200: both feet are then wholly off the field)
+
+  // --- placements ---
+  bool manual_placement = true; ///< at SET, robots not in a legal kick-off position are put on theirs
+  bool ball_out = true;         ///< put back a ball that left the field (else it stays where it is)
+  float ball_out_setback_mm = 1000.f; ///< ball put back this far towards the last toucher's own goal, mm
+  float ball_out_inset_mm = 0.f;      ///< ball put back this far inside the line it crossed, mm (0: on it)
+};
+
+/// Binds every RulesDef field to "rules.<name>".
+void bind(IniSchema& schema, RulesDef& def);
+
+/// Checks ranges (durations >= 0, half_s > 0, first_kickoff_team 0 or 1, distances > 0 or
+/// >= 0). Throws ConfigError naming the key, e.g. "rules.ready_s must be >= 0 (got -1)".
+void validate(const RulesDef& def);
+
+} // namespace touchline::sim

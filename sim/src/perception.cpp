@@ -1,0 +1,146 @@
+#include "touchline/sim/perception.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "touchline/angles.hpp"
+#include "touchline/sim/camera.hpp"
+#include "touchline/sim/occlusion.hpp"
+
+namespace touchline::sim {
+
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586476925;
+
+/// Adds bearing noise without touching an exact heading: normalise_angle's fmod would
+/// change the low bits of an angle already in range, and zero noise must give the
+/// geometry exactly.
+float wrap_if_needed(float a) { return (a >= -kPi && a < kPi) ? a : normalise_angle(a); }
+
+} // namespace
+
+Perception::Perception(const Field& field, const PerceptionDef& def, uint64_t seed)
+    : field_(field), def_(def), landmarks_(field_landmarks(field_)), rng_(seed) {}
+
+double Perception::uniform() { return static_cast<double>(rng_() >> 11) * 0x1.0p-53; }
+
+double Perception::gaussian() {
+  const double u1 = 1.0 - uniform(); // (0, 1]: log is finite
+  const double u2 = uniform();
+  return std::sqrt(-2.0 * std::log(u1)) * std::cos(kTwoPi * u2);
+}
+
+bool Perception::hidden(const Viewer& me, const std::vector<Viewer>& robots, float x_mm, float y_mm) const {
+  for (const Viewer& other : robots) {
+    if (other.id == me.id) continue;
+    if (body_hides(me.body, other.body, def_.occluder_radius_mm, x_mm, y_mm)) return true;
+  }
+  return false;
+}
+
+bool Perception::consider(const Viewer& me, const std::vector<Viewer>& robots, ObjectKind kind, int id, float x_mm,
+                          float y_mm, float miss_probability, bool can_be_hidden, std::vector<Observation>& out) {
+  // Draw first, always the same three numbers: see the determinism note in the header.
+  const double miss = uniform();
+  const double distance_z = gaussian();
+  const double bearing_z = gaussian();
+
+  const auto s = sight(def_.camera, me.body, me.head_yaw_rad, me.head_pitch_rad, x_mm, y_mm);
+  if (!s) return false;
+  if (can_be_hidden && hidden(me, robots, x_mm, y_mm)) return false;
+  if (miss < miss_probability) return false;
+
+  const NoiseDef& n = def_.noise;
+  const double distance = s->distance_mm;
+  const double distance_sd = n.distance_sd_mm + n.distance_sd_fraction * distance;
+  const double bearing_sd = n.bearing_sd_rad + n.bearing_sd_rad_per_m * distance / 1000.0;
+  const auto bearing_error = static_cast<float>(bearing_sd * bearing_z);
+
+  Observation o;
+  o.kind = kind;
+  o.id = id;
+  o.distance_mm = std::max(0.f, s->distance_mm + static_cast<float>(distance_sd * distance_z));
+  o.heading_rad = wrap_if_needed(s->heading_rad + bearing_error);
+  // The image coordinate moves with the bearing (image_x grows to the left, like the
+  // heading), clamped to the image: the object was in view.
+  o.image_x = std::clamp(s->image_x + bearing_error / def_.camera.field_of_view_rad, 0.f, 1.f);
+  out.push_back(o);
+  return true;
+}
+
+std::vector<Observation> Perception::observe(const Viewer& me, const std::vector<Viewer>& robots,
+                                             const BallTruth& ball) {
+  const NoiseDef& n = def_.noise;
+  std::vector<Observation> out;
+
+  const bool ball_seen =
+      consider(me, robots, ObjectKind::kBall, 0, ball.x_mm, ball.y_mm, n.ball_miss_probability, true, out);
+  // The phantom's numbers are drawn every frame too, used or not.
+  const double phantom = uniform();
+  const double phantom_across = uniform();
+  const double phantom_distance = uniform();
+  if (!ball_seen && phantom < n.phantom_ball_probability) {
+    // Somewhere in the image, at most as far as the camera sees: a plausible false
+    // detection, which a ball filter must learn to distrust.
+    const float range = std::min(n.phantom_ball_max_distance_mm,
+                                 max_camera_distance(def_.camera, me.head_pitch_rad));
+    const float fov = def_.camera.field_of_view_rad;
+    Observation o;
+    o.kind = ObjectKind::kBall;
+    o.image_x = static_cast<float>(phantom_across);
+    o.heading_rad = wrap_if_needed(me.head_yaw_rad + (o.image_x - 0.5f) * fov);
+    o.distance_mm = static_cast<float>((1.0 - phantom_distance) * range); // (0, range]
+    out.push_back(o);
+  }
+
+  for (const Landmark& mark : landmarks_)
+    consider(me, robots, mark.kind, mark.id, mark.x_mm, mark.y_mm, n.landmark_miss_probability, true, out);
+
+  for (const Viewer& other : robots) {
+    if (other.id == me.id) continue; // a robot never sees itself
+    const ObjectKind kind = other.id.team == me.id.team ? ObjectKind::kTeammate : ObjectKind::kOpponent;
+    // Robots are not occluded: a robot partly behind another still shows its head and arms.
+    consider(me, robots, kind, other.id.player, other.body.x_mm, other.body.y_mm, n.robot_miss_probability, false,
+             out);
+  }
+  return out;
+}
+
+SonarReading Perception::sonar(const Viewer& me, const std::vector<Viewer>& robots) {
+  SonarReading reading;
+  for (const Viewer& other : robots) {
+    if (other.id == me.id) continue;
+    sonar_update(def_.sonar, me.body, other.body.x_mm, other.body.y_mm, reading);
+  }
+  if (def_.sonar_sees_goal_posts) {
+    for (const Landmark& mark : landmarks_)
+      if (mark.kind == ObjectKind::kGoalPost) sonar_update(def_.sonar, me.body, mark.x_mm, mark.y_mm, reading);
+  }
+  // Both numbers are drawn every call (see the header's determinism note).
+  const double left_z = gaussian(), right_z = gaussian();
+  const double sd = def_.sonar_noise_sd_mm / static_cast<double>(def_.sonar.range_mm); // in fractions of the range
+  auto noisy = [sd](float fraction, double z) {
+    if (fraction >= 1.f) return fraction; // nothing seen: no echo to be noisy
+    return std::clamp(fraction + static_cast<float>(sd * z), 0.f, 1.f);
+  };
+  reading.left = noisy(reading.left, left_z);
+  reading.right = noisy(reading.right, right_z);
+  return reading;
+}
+
+std::vector<Percept> Perception::perceive(const std::vector<Viewer>& robots, const BallTruth& ball) {
+  std::vector<Percept> percepts;
+  percepts.reserve(robots.size());
+  for (const Viewer& me : robots) {
+    Percept p;
+    p.id = me.id;
+    p.seen = observe(me, robots, ball);
+    p.sonar = sonar(me, robots);
+    percepts.push_back(std::move(p));
+  }
+  return percepts;
+}
+
+} // namespace touchline::sim

@@ -1,0 +1,97 @@
+// The referee and the ball: goals, the ball leaving the field, the ball at kick-off.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "referee_detail.hpp"
+#include "touchline/sim/referee.hpp"
+
+namespace touchline::sim {
+
+namespace {
+
+/// How long ago the ball's centre crossed a line it is now `past` beyond, moving at `v`
+/// along that axis away from the field in the direction `outward` (+1 or -1); infinite if it
+/// is not moving outwards (it may have bounced back off a wall: no way to tell when).
+float time_since_crossing(float past, float v, float outward) {
+  const float away = v * outward;
+  return away > 0 ? past / away : std::numeric_limits<float>::infinity();
+}
+
+} // namespace
+
+bool Referee::check_goal(const RefereeInput& in, RefereeDecision& d) {
+  for (int defending : {0, 1}) {
+    // Wholly in: even the ball's edge nearest the field is behind the goal line.
+    const float towards_field = defending == 0 ? 1.f : -1.f;
+    const float nearest_x = in.ball.x_mm + towards_field * ball_radius_mm_;
+    if (!field_.in_goal(defending, nearest_x, in.ball.y_mm)) continue;
+    const int scorer = 1 - defending;
+    ++score_[scorer];
+    d.goals.push_back(GoalScored{scorer, in.utime});
+    kickoff_team_ = defending; // the conceding team kicks off
+    enter(GameState::kReady, in.utime, d);
+    d.ball = BallPlacement{BallPlacement::Why::kKickOff, 0.f, 0.f};
+    return true;
+  }
+  return false;
+}
+
+// Where the ball goes back (documented simplification of SPL 2011): to the point where it
+// crossed the line, moved ball_out_setback_mm along x towards the goal of the team that
+// touched it last (it loses ground), then ball_out_inset_mm inside the line it crossed.
+// Unknown last touch: where it crossed. The crossing point is traced back along the
+// ball's velocity, since the referee sees the ball only once per frame.
+void Referee::check_ball_out(const RefereeInput& in, RefereeDecision& d) const {
+  const BallTruth& b = in.ball;
+  const float hl = field_.half_length(), hw = field_.half_width(), r = ball_radius_mm_;
+  const bool past_goal_line = std::fabs(b.x_mm) > hl + r; // wholly past: edges count as in
+  const bool past_touchline = std::fabs(b.y_mm) > hw + r;
+  if (!past_goal_line && !past_touchline) return;
+
+  const float sx = detail::sign_of(b.x_mm), sy = detail::sign_of(b.y_mm);
+  const float since_x = time_since_crossing(std::fabs(b.x_mm) - hl, b.vx_mm_s, sx);
+  const float since_y = time_since_crossing(std::fabs(b.y_mm) - hw, b.vy_mm_s, sy);
+  bool over_touchline = past_touchline;
+  if (past_goal_line && past_touchline) {
+    // Out over a corner: it left over the line it crossed first (or, with no motion to
+    // tell by, the one it is farther past).
+    over_touchline = (std::isinf(since_x) && std::isinf(since_y))
+                         ? std::fabs(b.y_mm) - hw > std::fabs(b.x_mm) - hl
+                         : since_y > since_x;
+  }
+  const float setback = in.last_touch_team == 0   ? -rules_.ball_out_setback_mm
+                        : in.last_touch_team == 1 ? rules_.ball_out_setback_mm
+                                                  : 0.f;
+  const float inset = rules_.ball_out_inset_mm;
+  BallPlacement put{BallPlacement::Why::kBallOut, 0.f, 0.f};
+  if (over_touchline) {
+    const float crossed_x = std::isinf(since_y) ? b.x_mm : b.x_mm - b.vx_mm_s * since_y;
+    put.x_mm = std::clamp(std::clamp(crossed_x, -hl, hl) + setback, -hl, hl);
+    put.y_mm = sy * (hw - inset);
+  } else {
+    const float crossed_y = std::isinf(since_x) ? b.y_mm : b.y_mm - b.vy_mm_s * since_x;
+    put.x_mm = std::clamp(sx * hl + setback, -(hl - inset), hl - inset);
+    put.y_mm = std::clamp(crossed_y, -hw, hw);
+    // Put back on the goal line by its own goal, the ball would sit among the posts;
+    // move it out along the line, clear of the post.
+    const FieldDef& f = field_.def();
+    const float clear_of_post = f.goal_width_mm / 2 + f.goal_post_diameter_mm / 2 + r;
+    if (std::fabs(put.x_mm) > hl - f.goal_post_diameter_mm / 2 - r && std::fabs(put.y_mm) < clear_of_post)
+      put.y_mm = detail::sign_of(crossed_y) * clear_of_post;
+  }
+  d.ball = put;
+}
+
+// SPL: the referee puts the ball on the centre spot for every kick-off. The match puts
+// it down for the first (where its config says), the referee after a goal and at half
+// time, and again at SET if the robots nudged it while walking in READY.
+void Referee::replace_ball_for_kickoff(const BallTruth& ball, RefereeDecision& d) const {
+  if (!first_kickoff_taken_) return;
+  constexpr float kTolerance = 1.f; // mm, mm/s: a ball left alone stays exactly put
+  const bool moved = std::hypot(ball.x_mm, ball.y_mm) > kTolerance ||
+                     std::hypot(ball.vx_mm_s, ball.vy_mm_s) > kTolerance;
+  if (moved) d.ball = BallPlacement{BallPlacement::Why::kKickOff, 0.f, 0.f};
+}
+
+} // namespace touchline::sim

@@ -1,0 +1,63 @@
+#include "touchline/sim/rules.hpp"
+
+#include <sstream>
+#include <string>
+
+namespace touchline::sim {
+
+void bind(IniSchema& s, RulesDef& d) {
+  s.bind("rules.initial_s", &d.initial_s, "INITIAL before READY of each half, s")
+      .bind("rules.ready_s", &d.ready_s, "READY, robots walk to kick-off positions, s")
+      .bind("rules.set_s", &d.set_s, "SET, robots stand until the whistle, s")
+      .bind("rules.half_s", &d.half_s, "playing time of a half, s")
+      .bind("rules.first_kickoff_team", &d.first_kickoff_team, "team kicking off the first half, 0 or 1")
+      .bind("rules.removal_s", &d.removal_s, "time a penalised robot spends off the field, s")
+      .bind("rules.pushing", &d.pushing, "penalise pushing an opponent")
+      .bind("rules.illegal_defender", &d.illegal_defender, "penalise a field player in its own goal box")
+      .bind("rules.leaving_field", &d.leaving_field, "penalise leaving the field")
+      .bind("rules.contact_distance_mm", &d.collision.contact_distance_mm, "bodies closer have collided, mm")
+      .bind("rules.contest_distance_mm", &d.collision.contest_distance_mm, "both this near the ball: contesting, mm")
+      .bind("rules.pushing_cooldown_s", &d.pushing_cooldown_s, "no second pushing penalty from a pair, s")
+      .bind("rules.leave_field_margin_mm", &d.leave_field_margin_mm, "body past a line by more has left, mm")
+      .bind("rules.manual_placement", &d.manual_placement, "place robots not in legal positions at SET")
+      .bind("rules.ball_out", &d.ball_out, "put back a ball that left the field")
+      .bind("rules.ball_out_setback_mm", &d.ball_out_setback_mm, "towards the last toucher's goal, mm")
+      .bind("rules.ball_out_inset_mm", &d.ball_out_inset_mm, "inside the line crossed, mm");
+}
+
+namespace {
+
+template <typename T>
+[[noreturn]] void fail(const char* key, const char* rule, T got) {
+  std::ostringstream out;
+  out << key << " must be " << rule << " (got " << got << ")";
+  throw ConfigError(out.str());
+}
+
+// Written as !(ok) so that NaN fails too.
+void require_non_negative(const char* key, float value) {
+  if (!(value >= 0)) fail(key, ">= 0", value);
+}
+void require_positive(const char* key, float value) {
+  if (!(value > 0)) fail(key, "> 0", value);
+}
+
+} // namespace
+
+void validate(const RulesDef& d) {
+  require_non_negative("rules.initial_s", d.initial_s);
+  require_non_negative("rules.ready_s", d.ready_s);
+  require_non_negative("rules.set_s", d.set_s);
+  require_positive("rules.half_s", d.half_s);
+  if (d.first_kickoff_team != 0 && d.first_kickoff_team != 1)
+    fail("rules.first_kickoff_team", "0 or 1", d.first_kickoff_team);
+  require_non_negative("rules.removal_s", d.removal_s);
+  require_positive("rules.contact_distance_mm", d.collision.contact_distance_mm);
+  require_positive("rules.contest_distance_mm", d.collision.contest_distance_mm);
+  require_non_negative("rules.pushing_cooldown_s", d.pushing_cooldown_s);
+  require_non_negative("rules.leave_field_margin_mm", d.leave_field_margin_mm);
+  require_non_negative("rules.ball_out_setback_mm", d.ball_out_setback_mm);
+  require_non_negative("rules.ball_out_inset_mm", d.ball_out_inset_mm);
+}
+
+} // namespace touchline::sim

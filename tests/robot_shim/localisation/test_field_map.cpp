@@ -1,0 +1,69 @@
+// The robot's landmark map: positions by the id convention of touchline/frame.hpp, and
+// agreement with the world's own field geometry (the one place a test may look at both).
+#include <gtest/gtest.h>
+
+#include "touchline/robot/localisation/field_map.hpp"
+#include "touchline/sim/field.hpp"
+
+namespace touchline::robot::localisation {
+namespace {
+
+void expect_at(const FieldMap& map, ObjectKind kind, int id, double x, double y) {
+  const auto p = map.landmark(kind, id);
+  ASSERT_TRUE(p) << static_cast<int>(kind) << " " << id;
+  EXPECT_DOUBLE_EQ(p->x_mm, x) << static_cast<int>(kind) << " " << id;
+  EXPECT_DOUBLE_EQ(p->y_mm, y) << static_cast<int>(kind) << " " << id;
+}
+
+TEST(FieldMap, Spl2011LandmarksFollowTheIdConvention) {
+  const FieldMap map;
+  // Team 0's goal at -x: its left post, seen from the centre, is at -y.
+  expect_at(map, ObjectKind::kGoalPost, 0, -3000, -700);
+  expect_at(map, ObjectKind::kGoalPost, 1, -3000, 700);
+  expect_at(map, ObjectKind::kGoalPost, 2, 3000, 700);
+  expect_at(map, ObjectKind::kGoalPost, 3, 3000, -700);
+  // Corners counter-clockwise from (-x, -y).
+  expect_at(map, ObjectKind::kFieldCorner, 0, -3000, -2000);
+  expect_at(map, ObjectKind::kFieldCorner, 1, 3000, -2000);
+  expect_at(map, ObjectKind::kFieldCorner, 2, 3000, 2000);
+  expect_at(map, ObjectKind::kFieldCorner, 3, -3000, 2000);
+  expect_at(map, ObjectKind::kCentreLineEnd, 0, 0, -2000);
+  expect_at(map, ObjectKind::kCentreLineEnd, 1, 0, 2000);
+  // Penalty marks 1800 mm in front of their goal lines; 0 is team 0's.
+  expect_at(map, ObjectKind::kPenaltyMark, 0, -1200, 0);
+  expect_at(map, ObjectKind::kPenaltyMark, 1, 1200, 0);
+}
+
+TEST(FieldMap, ScalesWithTheConfiguredField) {
+  const FieldMap map{9000.f, 6000.f, 1500.f, 1300.f};  // config/spl2020.ini's dimensions
+  expect_at(map, ObjectKind::kGoalPost, 2, 4500, 750);
+  expect_at(map, ObjectKind::kFieldCorner, 2, 4500, 3000);
+  expect_at(map, ObjectKind::kPenaltyMark, 0, -3200, 0);
+}
+
+TEST(FieldMap, OnlyLandmarksWithValidIdsHavePositions) {
+  const FieldMap map;
+  EXPECT_FALSE(map.landmark(ObjectKind::kBall, 0));
+  EXPECT_FALSE(map.landmark(ObjectKind::kTeammate, 1));
+  EXPECT_FALSE(map.landmark(ObjectKind::kOpponent, 1));
+  EXPECT_FALSE(map.landmark(ObjectKind::kGoalPost, 4));
+  EXPECT_FALSE(map.landmark(ObjectKind::kGoalPost, -1));
+  EXPECT_FALSE(map.landmark(ObjectKind::kCentreLineEnd, 2));
+  EXPECT_FALSE(map.landmark(ObjectKind::kPenaltyMark, 2));
+  EXPECT_EQ(map.landmarks().size(), 12u);
+  EXPECT_TRUE(is_landmark(ObjectKind::kFieldCorner));
+  EXPECT_FALSE(is_landmark(ObjectKind::kBall));
+}
+
+TEST(FieldMap, GoalPostsAgreeWithTheWorldsField) {
+  const sim::FieldDef def;
+  const sim::Field field(def);
+  const FieldMap map{def.length_mm, def.width_mm, def.goal_width_mm, def.penalty_mark_distance_mm};
+  for (int id = 0; id < 4; ++id) {
+    const Pose2D post = field.goal_post(/*defending_team=*/id / 2, /*left=*/id % 2 == 0);
+    expect_at(map, ObjectKind::kGoalPost, id, post.x_mm, post.y_mm);
+  }
+}
+
+} // namespace
+} // namespace touchline::robot::localisation

@@ -1,0 +1,81 @@
+// The per-frame localisation: odometry poses in, Blackboard out.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "synthetic.hpp"
+#include "touchline/frame.hpp"
+#include "touchline/robot/localisation/localiser.hpp"
+
+namespace touchline::robot::localisation {
+namespace {
+
+TEST(Localiser, StartsWhereTheRulesPlaceTheRobot) {
+  const Pose2D start{-1500.f, -2000.f, 1.5708f};
+  Localiser localiser(LocalisationDef{}, start);
+  api::LocalisationBlackboard out;
+  localiser.write(out);
+  EXPECT_FLOAT_EQ(out.robotPos.x, -1500.f);
+  EXPECT_FLOAT_EQ(out.robotPos.y, -2000.f);
+  EXPECT_FLOAT_EQ(out.robotPos.theta, 1.5708f);
+  EXPECT_NEAR(localiser.pose_filter().sigma_x_mm(), PoseFilterDef{}.initial_sigma_xy_mm, 1e-9);
+}
+
+TEST(Localiser, FollowsOdometryChangesNotTheOdometryFrame) {
+  // The walk's odometry frame starts wherever it likes; only its changes move the estimate.
+  const Pose2D start{0.f, 0.f, 0.f};
+  Localiser localiser(LocalisationDef{}, start);
+  const Pose2D odo0{500.f, 200.f, 1.0f};
+  localiser.frame(0, odo0, {});
+  // 100 mm forward and 0.2 rad left in the odometry's own robot frame.
+  const Pose2D odo1 = synthetic::compose(odo0, {100.0, 0.0, 0.2});
+  localiser.frame(33333, odo1, {});
+  api::LocalisationBlackboard out;
+  localiser.write(out);
+  EXPECT_NEAR(out.robotPos.x, 100.f, 1e-2f);
+  EXPECT_NEAR(out.robotPos.y, 0.f, 1e-2f);
+  EXPECT_NEAR(out.robotPos.theta, 0.2f, 1e-5f);
+}
+
+TEST(Localiser, WritesTheBallFromThePoseEstimate) {
+  const Pose2D truth{-1000.f, 0.f, 0.f};  // facing team 1's goal from our half
+  Localiser localiser(LocalisationDef{}, truth);
+  const FieldMap map;
+  std::mt19937 rng(1);
+  const Pose2D odometry{};
+  api::LocalisationBlackboard out;
+  for (int frame = 0; frame < 30; ++frame) {
+    std::vector<Observation> seen = synthetic::see_landmarks(map, synthetic::Camera{}, truth, 0.0, rng);
+    seen.push_back(synthetic::observe(truth, 0.0, 300.0, ObjectKind::kBall, 0, {}, rng));
+    seen.push_back(synthetic::observe(truth, 500.0, -300.0, ObjectKind::kOpponent, 2, {}, rng));
+    localiser.frame(frame_start_utime(frame), odometry, seen);
+  }
+  localiser.write(out);
+  EXPECT_NEAR(out.ballPos.x, 0.f, 60.f);
+  EXPECT_NEAR(out.ballPos.y, 300.f, 60.f);
+  EXPECT_EQ(out.ballLostCount, 0);
+  EXPECT_FLOAT_EQ(out.teamBallPos.x, out.ballPos.x);
+  EXPECT_FLOAT_EQ(out.teamBallPos.y, out.ballPos.y);
+  const api::RRCoord expected = api::toRobotRelative(out.robotPos, out.ballPos.x, out.ballPos.y);
+  EXPECT_FLOAT_EQ(out.ballPosRR.distance, expected.distance);
+  EXPECT_FLOAT_EQ(out.ballPosRR.heading, expected.heading);
+  EXPECT_NEAR(out.ballPosRR.distance, std::hypot(1000.f, 300.f), 80.f);
+
+  // Three frames without the ball.
+  for (int frame = 30; frame < 33; ++frame) localiser.frame(frame_start_utime(frame), odometry, {});
+  localiser.write(out);
+  EXPECT_EQ(out.ballLostCount, 3);
+}
+
+TEST(Localiser, ResetReplacesTheRobot) {
+  Localiser localiser(LocalisationDef{}, Pose2D{});
+  localiser.reset(Pose2D{-2000.f, 2000.f, -1.5708f});
+  api::LocalisationBlackboard out;
+  localiser.write(out);
+  EXPECT_FLOAT_EQ(out.robotPos.x, -2000.f);
+  EXPECT_FLOAT_EQ(out.robotPos.theta, -1.5708f);
+}
+
+} // namespace
+} // namespace touchline::robot::localisation
