@@ -1,0 +1,107 @@
+// touchline_behaviour_bench: what one behaviour tick costs, Python (embedded, with its
+// Blackboard access) against the C++ port, on the GoToBall runs of the port corpus.
+// Prints median and p90 per tick in microseconds; --json PATH writes them.
+#include <pybind11/embed.h>
+
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <lcm/lcm-cpp.hpp>
+
+#include "touchline/behaviour/registry.hpp"
+#include "touchline/blackboard_snapshot_t.hpp"
+#include "touchline/lcm/snapshot.hpp"
+#include "touchline/python/python_behaviour.hpp"
+
+using namespace touchline;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+std::vector<api::Blackboard> go_to_ball_frames(const std::string& corpus) {
+  ::lcm::LogFile log(corpus, "r");
+  if (!log.good()) throw std::runtime_error("cannot read " + corpus);
+  std::vector<api::Blackboard> frames;
+  while (const ::lcm::LogEvent* event = log.readNextEvent()) {
+    blackboard_snapshot_t snapshot;
+    if (snapshot.decode(event->data, 0, event->datalen) < 0) continue;
+    if (snapshot.skill == "py skill=GoToBall") frames.push_back(transport::from_snapshot(snapshot));
+  }
+  if (frames.empty()) throw std::runtime_error(corpus + " has no GoToBall frames");
+  return frames;
+}
+
+struct Figures {
+  double median_us = 0, p90_us = 0;
+};
+
+/// Ticks `behaviour` over every frame `rounds` times; per-tick wall time.
+Figures time_ticks(api::Behaviour& behaviour, const std::vector<api::Blackboard>& frames, int rounds) {
+  std::vector<double> us;
+  us.reserve(frames.size() * static_cast<size_t>(rounds));
+  for (int r = 0; r < rounds; ++r) {
+    for (const api::Blackboard& blackboard : frames) {
+      const auto start = Clock::now();
+      const api::ActionCommand::All request = behaviour.tick(blackboard);
+      const auto end = Clock::now();
+      if (request.body.speed < 0) std::cerr << ""; // keeps the call observable
+      us.push_back(std::chrono::duration<double, std::micro>(end - start).count());
+    }
+  }
+  std::sort(us.begin(), us.end());
+  return {us[us.size() / 2], us[us.size() * 9 / 10]};
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  std::string json_path;
+  int rounds = 5;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--json" && i + 1 < argc) {
+      json_path = argv[++i];
+    } else if (arg == "--rounds" && i + 1 < argc) {
+      rounds = std::max(1, std::atoi(argv[++i]));
+    } else {
+      std::cerr << "touchline_behaviour_bench: unknown argument '" << arg << "' (options: --json PATH, --rounds N)\n";
+      return 2;
+    }
+  }
+  try {
+    const auto frames = go_to_ball_frames(TOUCHLINE_CORPUS);
+    pybind11::scoped_interpreter interpreter(false, 0, nullptr, false);
+    python::PythonBehaviourDef def;
+    def.directory = TOUCHLINE_BEHAVIOUR_PY;
+    def.params = {{"skill", "GoToBall"}};
+    def.reload_check_interval_us = int64_t{1} << 60; // measure the tick, not the file watch
+    python::PythonBehaviour py(def);
+    auto cpp = behaviour::make_behaviour("GoToBall", {});
+    time_ticks(py, frames, 1); // warm up
+    const Figures python_figures = time_ticks(py, frames, rounds);
+    const Figures cpp_figures = time_ticks(*cpp, frames, rounds);
+
+    std::cout << std::fixed << std::setprecision(2) << "behaviour tick, GoToBall, " << frames.size()
+              << " corpus frames x " << rounds << " rounds (wall time per tick)\n"
+              << "  python (embedded, behaviour.tick)  median " << python_figures.median_us << " us, p90 "
+              << python_figures.p90_us << " us\n"
+              << "  c++ port                           median " << cpp_figures.median_us << " us, p90 "
+              << cpp_figures.p90_us << " us\n";
+    if (!json_path.empty()) {
+      std::ofstream out(json_path);
+      out << std::setprecision(6) << "{\n  \"python_tick_median_us\": " << python_figures.median_us
+          << ",\n  \"python_tick_p90_us\": " << python_figures.p90_us << ",\n  \"cpp_tick_median_us\": "
+          << cpp_figures.median_us << ",\n  \"cpp_tick_p90_us\": " << cpp_figures.p90_us
+          << ",\n  \"frames\": " << frames.size() << ",\n  \"rounds\": " << rounds << "\n}\n";
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "touchline_behaviour_bench: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
