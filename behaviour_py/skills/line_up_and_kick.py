@@ -26,7 +26,7 @@ LINE_UP_GAIN = 2.0                         # 1/s: step request (mm/s) per mm of 
 LINE_UP_MAX_SPEED = 100.0                  # mm/s: small steps, either axis
 LINE_UP_MAX_TURN = 0.5                     # rad/s
 KICK_POWER = 1.0                           # default power of a kick ...
-DRIBBLE_POWER = 0.3                        # ... and of a dribble
+DRIBBLE_POWER = 1.0                        # ... and of a dribble (about 1 m)
 
 
 class LineUpAndKick:

@@ -62,7 +62,7 @@ std::string behaviour_list() {
 
 int main(int argc, char** argv) {
   int team = -1, player = -1;
-  std::string behaviour_name = "stand", walk_config, python_dir = TOUCHLINE_PYTHON_DIR;
+  std::string behaviour_name = "stand", walk_config, kick_config, python_dir = TOUCHLINE_PYTHON_DIR;
   std::vector<std::string> param_args;
   transport::RobotNodeDef node;
   robot::BehaviourTimingDef timing;
@@ -83,6 +83,7 @@ int main(int argc, char** argv) {
      "charge the behaviour's CPU time to simulated time: a tick using more than one frame "
      "(33.3 ms) of CPU makes the robot miss frames as on the robot (the last request stays in force)")
     ("walk-config", po::value(&walk_config), "walk parameters file ([walk] section); default: the built-in walk")
+    ("kick-config", po::value(&kick_config), "kick and dribble parameters file ([kick], [dribble]); default: the built-in kick")
     ("lcm-url", po::value(&node.lcm_url)->default_value(node.lcm_url), "LCM provider URL")
     ("join-timeout", po::value(&node.join_timeout_s)->default_value(node.join_timeout_s), "wall seconds to wait for sim_world to accept us")
     ("world-timeout", po::value(&node.world_timeout_s)->default_value(node.world_timeout_s), "wall seconds of silence from sim_world before exiting")
@@ -92,6 +93,7 @@ int main(int argc, char** argv) {
   std::optional<pybind11::scoped_interpreter> interpreter; // only for py; outlives the behaviour
   std::unique_ptr<api::Behaviour> behaviour;
   robot::WalkDef walk;
+  robot::KickDef kick;
   try {
     po::variables_map vm;
     po::store(po::command_line_parser(argc, argv).options(options).run(), vm);
@@ -106,6 +108,7 @@ int main(int argc, char** argv) {
     if (node.join_timeout_s <= 0 || node.world_timeout_s <= 0) throw po::error("timeouts must be > 0");
     if (node.snapshot_every < 0) throw po::error("--snapshot-every must be >= 0");
     if (!walk_config.empty()) walk = robot::load_walk_def(walk_config);
+    if (!kick_config.empty()) kick = robot::load_kick_def(kick_config);
     if (const auto module = python_module(behaviour_name)) {
       // Python's own signal handlers stay off: SIGINT/SIGTERM stop the shim (below); no
       // program directory on sys.path: the behaviour's modules come from --python-dir alone.
@@ -138,7 +141,7 @@ int main(int argc, char** argv) {
   std::signal(SIGINT, [](int) { transport::request_robot_stop(); });
   std::signal(SIGTERM, [](int) { transport::request_robot_stop(); });
   try {
-    robot::Robot robot({team, player}, walk, std::move(behaviour), timing);
+    robot::Robot robot({team, player}, walk, std::move(behaviour), timing, kick);
     robot.set_behaviour_name(describe_behaviour(behaviour_name, parse_params(param_args)));
     switch (transport::run_robot(robot, node, std::cerr)) {
       case transport::RobotExit::kMatchOver: return 0;

@@ -82,6 +82,7 @@ blackboard_snapshot_t to_snapshot(const api::Blackboard& bb, RobotId id, int64_t
   m.head_pitch_rad = bb.motion.headPitch;
   m.standing = bb.motion.standing;
   m.motion_ticks = bb.motion.ticks;
+  m.kick_phase = static_cast<int8_t>(bb.motion.kickPhase);
 
   const auto& loc = bb.localisation;
   m.robot_pos = pose(loc.robotPos);
@@ -122,6 +123,7 @@ api::Blackboard from_snapshot(const blackboard_snapshot_t& m) {
   bb.motion.headPitch = m.head_pitch_rad;
   bb.motion.standing = m.standing;
   bb.motion.ticks = m.motion_ticks;
+  bb.motion.kickPhase = m.kick_phase;
 
   auto& loc = bb.localisation;
   loc.robotPos = pose(m.robot_pos);

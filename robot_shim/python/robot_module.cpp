@@ -99,6 +99,7 @@ void define_blackboard(py::module_& m) {
   motion.def_readonly("headYaw", &MotionBlackboard::headYaw)
       .def_readonly("headPitch", &MotionBlackboard::headPitch)
       .def_readonly("standing", &MotionBlackboard::standing)
+      .def_readonly("kickPhase", &MotionBlackboard::kickPhase)
       .def_readonly("ticks", &MotionBlackboard::ticks);
 
   py::class_<LocalisationBlackboard> localisation(m, "LocalisationBlackboard");

@@ -13,9 +13,10 @@ int64_t behaviour_frames_used(int64_t cpu_us) {
   return std::max<int64_t>(frames, 1);
 }
 
-Robot::Robot(RobotId id, const WalkDef& walk, std::unique_ptr<api::Behaviour> behaviour, BehaviourTimingDef timing)
+Robot::Robot(RobotId id, const WalkDef& walk, std::unique_ptr<api::Behaviour> behaviour, BehaviourTimingDef timing,
+             const KickDef& kick)
     : id_(id), behaviour_(std::move(behaviour)), charge_cpu_(timing.charge_cpu),
-      behaviour_adapter_(*behaviour_, std::move(timing.cpu_clock)), motion_(walk) {
+      behaviour_adapter_(*behaviour_, std::move(timing.cpu_clock)), motion_(walk, HeadDef{}, kick) {
   if (!behaviour_) throw std::invalid_argument("Robot needs a behaviour");
 }
 

@@ -146,6 +146,7 @@ void validate(const WorldConfig& config) {
   validate_physics(config.physics);
   validate_match(config.match);
   validate(config.perception);
+  validate(config.rules);
   const Field field(config.field);
   if (!field.on_carpet(config.match.ball_start_x_mm, config.match.ball_start_y_mm))
     throw ConfigError("match.ball_start_x_mm/_y_mm must be on the carpet (got " +
@@ -159,6 +160,7 @@ WorldConfig load_world_config(const std::string& path, const std::vector<std::st
   bind(schema, config.physics);
   bind(schema, config.match);
   bind(schema, config.perception);
+  bind(schema, config.rules);
   if (!path.empty()) schema.read_file(path);
   for (const std::string& assignment : overrides) schema.apply_override(assignment);
   validate(config);

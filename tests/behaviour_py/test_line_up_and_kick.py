@@ -83,6 +83,6 @@ def test_lost_ball_stands():
 def test_dribble_variant_and_power():
     body = LineUpAndKick(dribble=True).tick(board(ORIGIN, ball=(130.0, 50.0))).body
     assert body.actionType == robot.ActionType.DRIBBLE
-    assert body.power == pytest.approx(0.3)
+    assert body.power == pytest.approx(1.0)
     body = LineUpAndKick(power=0.7).tick(board(ORIGIN, ball=(130.0, 50.0))).body
     assert (body.actionType, body.power) == (KICK, pytest.approx(0.7))

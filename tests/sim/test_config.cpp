@@ -81,6 +81,7 @@ TEST(Config, EveryBoundKeyIsInBothShippedFiles) {
     bind(schema, config.physics);
     bind(schema, config.match);
     bind(schema, config.perception);
+    bind(schema, config.rules);
     std::ifstream file(kConfigDir + name);
     ASSERT_TRUE(file) << name;
     const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());

@@ -16,17 +16,7 @@ namespace {
 const std::string kConfigDir = std::string(TOUCHLINE_SOURCE_DIR) + "/config/";
 
 /// Reads a shipped file with every section bound (the files hold [field] etc. too).
-PerceptionDef read(const std::string& name) {
-  WorldConfig world;
-  PerceptionDef perception;
-  IniSchema schema("test");
-  bind(schema, world.field);
-  bind(schema, world.physics);
-  bind(schema, world.match);
-  bind(schema, perception);
-  schema.read_file(kConfigDir + name);
-  return perception;
-}
+PerceptionDef read(const std::string& name) { return load_world_config(kConfigDir + name).perception; }
 
 TEST(PerceptionConfig, ShippedFilesHoldTheCodeDefaults) {
   const PerceptionDef d;

@@ -56,9 +56,11 @@ TEST_F(RefereeTest, CameraFrameUpdatesEndTheHalfAtExactlyHalfSecondsOfPlay) {
     input.utime = frame_start_utime(frame);
     for (const auto& c : ref().update(input).state_changes) changes.push_back(c);
   }
-  ASSERT_EQ(changes.size(), 5u);
-  expect_change(changes[3], GameState::kSet, GameState::kPlaying, 51.0);
-  expect_change(changes[4], GameState::kPlaying, GameState::kInitial, 651.0); // 51 + half_s 600
+  ASSERT_EQ(changes.size(), 4u);
+  expect_change(changes[0], GameState::kInitial, GameState::kReady, 1.0);
+  expect_change(changes[1], GameState::kReady, GameState::kSet, 46.0);
+  expect_change(changes[2], GameState::kSet, GameState::kPlaying, 51.0);
+  expect_change(changes[3], GameState::kPlaying, GameState::kInitial, 651.0); // 51 + half_s 600
   EXPECT_FALSE(ref().info().first_half);
 }
 

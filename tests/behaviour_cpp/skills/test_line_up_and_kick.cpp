@@ -97,7 +97,7 @@ TEST(LineUpAndKickSkill, LostBallStands) {
 TEST(LineUpAndKickSkill, DribbleVariantAndPower) {
   auto body = LineUpAndKick(OPPONENT_GOAL_X, OPPONENT_GOAL_Y, true).tick(ballAt(130.f, 50.f)).body;
   EXPECT_EQ(body.actionType, ActionType::DRIBBLE);
-  EXPECT_FLOAT_EQ(body.power, 0.3f);
+  EXPECT_FLOAT_EQ(body.power, 1.f);
   body = LineUpAndKick(OPPONENT_GOAL_X, OPPONENT_GOAL_Y, false, 0.7f).tick(ballAt(130.f, 50.f)).body;
   EXPECT_EQ(body.actionType, ActionType::KICK);
   EXPECT_FLOAT_EQ(body.power, 0.7f);

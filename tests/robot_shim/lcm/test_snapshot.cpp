@@ -19,6 +19,7 @@ api::Blackboard sample() {
   bb.motion.headPitch = 0.1f;
   bb.motion.standing = false;
   bb.motion.ticks = 3700;
+  bb.motion.kickPhase = 2;
   bb.localisation.robotPos = {-1000, 500, 1.5f};
   bb.localisation.ballPos = {200, 100, 0};
   bb.localisation.ballPosRR = {1250, -0.75f};
@@ -61,6 +62,7 @@ TEST(Snapshot, BlackboardSurvivesEncodeAndDecode) {
   EXPECT_EQ(out.motion.active.actionType, AC::ActionType::WALK);
   EXPECT_EQ(out.motion.active.left, -50);
   EXPECT_EQ(out.motion.ticks, 3700);
+  EXPECT_EQ(out.motion.kickPhase, 2);
   EXPECT_FALSE(out.motion.standing);
   EXPECT_EQ(out.localisation.robotPos.y, 500);
   EXPECT_EQ(out.localisation.ballPosRR.heading, -0.75f);

@@ -43,7 +43,7 @@ struct BehaviourStats {
 class Robot {
  public:
   Robot(RobotId id, const WalkDef& walk, std::unique_ptr<api::Behaviour> behaviour,
-        BehaviourTimingDef timing = {});
+        BehaviourTimingDef timing = {}, const KickDef& kick = {});
 
   /// Runs one camera frame. `sense` is this robot's entry of `frame`.
   RobotAct step(const SenseFrame& frame, const RobotSense& sense);

@@ -1,5 +1,5 @@
 #pragma once
-// A world config file: [field], [physics], [match], [camera], [noise] and [sonar] sections (config/spl2011.ini,
+// A world config file: [field], [physics], [match], [camera], [noise], [sonar] and [rules] sections (config/spl2011.ini,
 // config/spl2020.ini). Every key is optional; its default is the definition struct's.
 #include <string>
 #include <vector>
@@ -7,6 +7,7 @@
 #include "touchline/ini.hpp"
 #include "touchline/sim/field.hpp"
 #include "touchline/sim/perception_config.hpp"
+#include "touchline/sim/rules.hpp"
 #include "touchline/sim/world.hpp"
 
 namespace touchline::sim {
@@ -24,6 +25,7 @@ struct WorldConfig {
   PhysicsDef physics;
   MatchDef match;
   PerceptionDef perception;
+  RulesDef rules;
 };
 
 void bind(IniSchema& schema, FieldDef& def);

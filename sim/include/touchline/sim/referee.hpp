@@ -9,7 +9,20 @@
 // from the utime each state began, whatever the update rate. A goal gives READY again,
 // kick-off to the conceding team. The clock (secs_remaining) runs only in PLAYING; after
 // half_s of it the half ends: INITIAL of the second half, kick-off to the team that did
-// not kick off the first, or FINISHED after the second. Teams keep their sides.
+// not kick off the first, or FINISHED after the second.
+//
+// Simplifications of the SPL 2011 rules, on purpose:
+// - SET lasts set_s (no human whistle); READY always lasts ready_s, even when everyone
+//   is in place. Teams keep their sides at half time; the half-time break is INITIAL.
+// - Half time ends every penalty: the second half starts with everyone on the field.
+// - Penalties are given only in PLAYING, except leaving the field (READY, SET, PLAYING:
+//   robots walking to their positions must stay on the field too). Penalty time runs in
+//   every state. Crashed (inactive) robots are never penalised.
+// - Pushing is judged by the thesis' heuristic (collision.hpp) between opponents only.
+// - Ball out: put back on the line it crossed, ball_out_setback_mm towards the own goal
+//   of the team that touched it last (the match says which), or where it crossed if
+//   nobody knows; no throw-in or goal-kick spots.
+// - No kick-off restrictions in PLAYING (the defenders may enter the circle at once).
 #include <array>
 #include <cstdint>
 #include <map>
@@ -70,10 +83,13 @@ struct RobotPlacement {
   Pose2D pose;
 };
 
+/// Put the ball here at rest. kKickOff: on the centre spot after a goal, at half time, and
+/// at SET if the robots moved it in READY (never for the first kick-off: the match puts
+/// that ball where its config says). kBallOut: it left the field (see the notes above).
 struct BallPlacement {
   enum class Why : int8_t { kKickOff, kBallOut };
   Why why = Why::kKickOff;
-  float x_mm = 0, y_mm = 0; ///< put it here at rest
+  float x_mm = 0, y_mm = 0;
 };
 
 /// What one update decided, in the order it happened. Placements are in the order to

@@ -23,7 +23,7 @@ inline constexpr float LINE_UP_GAIN = 2.f;           ///< 1/s: step request (mm/
 inline constexpr float LINE_UP_MAX_SPEED = 100.f;    ///< mm/s: small steps, either axis
 inline constexpr float LINE_UP_MAX_TURN = 0.5f;      ///< rad/s
 inline constexpr float KICK_POWER = 1.f;             ///< default power of a kick ...
-inline constexpr float DRIBBLE_POWER = 0.3f;         ///< ... and of a dribble
+inline constexpr float DRIBBLE_POWER = 1.0f;         ///< ... and of a dribble (about 1 m)
 
 class LineUpAndKick : public api::Behaviour {
  public:
