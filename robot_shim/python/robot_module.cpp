@@ -100,6 +100,7 @@ void define_blackboard(py::module_& m) {
       .def_readonly("headPitch", &MotionBlackboard::headPitch)
       .def_readonly("standing", &MotionBlackboard::standing)
       .def_readonly("kickPhase", &MotionBlackboard::kickPhase)
+      .def_readonly("fallen", &MotionBlackboard::fallen)
       .def_readonly("ticks", &MotionBlackboard::ticks);
 
   py::class_<LocalisationBlackboard> localisation(m, "LocalisationBlackboard");

@@ -4,27 +4,29 @@
 
 namespace touchline::robot {
 
-void write_game_controller(const SenseFrame& frame, RobotId id, api::Blackboard& blackboard) {
+void write_game_controller(const SenseFrame& frame, const RobotSense& sense, api::Blackboard& blackboard) {
   blackboard.utime = frame.utime;
   auto& gc = blackboard.gameController;
-  gc.state = static_cast<api::GameState>(frame.game_state);
-  gc.team = id.team;
-  gc.playerNumber = id.player;
+  gc.state = static_cast<api::GameState>(frame.game.state);
+  gc.team = sense.id.team;
+  gc.playerNumber = sense.id.player;
+  gc.penalised = sense.penalised;
+  gc.score = frame.game.score;
+  gc.secsRemaining = frame.game.secs_remaining;
 }
 
-void write_perception(const SenseFrame& frame, const RobotSense& sense, api::Blackboard& blackboard) {
-  auto& loc = blackboard.localisation;
-  loc.robotPos = {sense.truth.x_mm, sense.truth.y_mm, sense.truth.theta_rad};
-  loc.ballPos = {sense.ball_x_mm, sense.ball_y_mm, 0};
-  loc.ballPosRR = api::toRobotRelative(loc.robotPos, sense.ball_x_mm, sense.ball_y_mm);
-  loc.ballLostCount = 0;
-  loc.teamBallPos = loc.ballPos;
-
+void write_vision(const SenseFrame& frame, const RobotSense& sense, api::Blackboard& blackboard) {
   auto& vision = blackboard.vision;
   vision.frame = frame.frame;
-  vision.ballSeen = true;
-  vision.ball = loc.ballPosRR;
+  vision.ballSeen = false;
+  for (const Observation& o : sense.seen) {
+    if (o.kind != ObjectKind::kBall || (vision.ballSeen && o.distance_mm >= vision.ball.distance)) continue;
+    vision.ballSeen = true;
+    vision.ball = {o.distance_mm, o.heading_rad};
+  }
 }
+
+void write_fall(const RobotSense& sense, api::Blackboard& blackboard) { blackboard.motion.fallen = sense.fallen; }
 
 int64_t thread_cpu_us() {
   timespec ts{};

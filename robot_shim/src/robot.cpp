@@ -14,9 +14,10 @@ int64_t behaviour_frames_used(int64_t cpu_us) {
 }
 
 Robot::Robot(RobotId id, const WalkDef& walk, std::unique_ptr<api::Behaviour> behaviour, BehaviourTimingDef timing,
-             const KickDef& kick)
+             const KickDef& kick, const LocalisationModeDef& localisation)
     : id_(id), behaviour_(std::move(behaviour)), charge_cpu_(timing.charge_cpu),
-      behaviour_adapter_(*behaviour_, std::move(timing.cpu_clock)), motion_(walk, HeadDef{}, kick) {
+      behaviour_adapter_(*behaviour_, std::move(timing.cpu_clock)), motion_(walk, HeadDef{}, kick),
+      localisation_(localisation.filters, localisation.perfect) {
   if (!behaviour_) throw std::invalid_argument("Robot needs a behaviour");
 }
 
@@ -37,8 +38,10 @@ void Robot::run_behaviour(int64_t frame) {
 }
 
 RobotAct Robot::step(const SenseFrame& frame, const RobotSense& sense) {
-  write_game_controller(frame, id_, blackboard_);
-  write_perception(frame, sense, blackboard_);
+  write_game_controller(frame, sense, blackboard_);
+  write_vision(frame, sense, blackboard_);
+  write_fall(sense, blackboard_);
+  localisation_.tick(frame, sense, blackboard_);
   stats_.ticked_last_step = behaviour_due(frame.frame);
   if (stats_.ticked_last_step) {
     run_behaviour(frame.frame);

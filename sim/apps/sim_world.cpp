@@ -93,7 +93,7 @@ int main(int argc, char** argv) {
     ("speed", po::value(&node.speed)->default_value(node.speed), "real-time multiple for realtime and free modes")
     ("robot-timeout-ms", po::value(&node.robot_timeout_ms)->default_value(node.robot_timeout_ms), "wall time a robot may take to answer a frame before it is marked inactive")
     ("join-timeout", po::value(&node.join_timeout_s)->default_value(node.join_timeout_s), "wall seconds to wait for the robots to join")
-    ("seed", po::value(&seed)->default_value(seed), "random seed (recorded; the world has no random model yet)")
+    ("seed", po::value(&seed)->default_value(seed), "random seed: the camera noise, false negatives and falls all draw from it")
     ("lcm-url", po::value(&node.lcm_url)->default_value(node.lcm_url), "LCM provider URL")
     ("summary", po::value(&node.summary_path), "write a JSON summary of the match to this path")
     ("log", po::value(&node.log_path), "record every message of the match to this LCM event log (lcm-logger format; timestamps are simulated time)")
@@ -129,7 +129,7 @@ int main(int argc, char** argv) {
   std::signal(SIGINT, [](int) { transport::request_stop(); });
   std::signal(SIGTERM, [](int) { transport::request_stop(); });
   try {
-    sim::Match match(config);
+    sim::Match match(config, seed);
     const transport::RunSummary summary = transport::run_world(match, node, std::cerr);
     print_summary(match, summary);
     if (!node.summary_path.empty()) write_summary_json(node.summary_path, match, summary, seed);

@@ -63,7 +63,12 @@ sense_t to_lcm(const SenseFrame& frame) {
   m.utime = frame.utime;
   m.frame = frame.frame;
   m.motion_ticks = static_cast<int8_t>(frame.motion_ticks);
-  m.game_state = static_cast<int8_t>(frame.game_state);
+  m.game_state = static_cast<int8_t>(frame.game.state);
+  m.secs_remaining = frame.game.secs_remaining;
+  m.first_half = frame.game.first_half;
+  m.kickoff_team = static_cast<int8_t>(frame.game.kickoff_team);
+  m.score[0] = static_cast<int8_t>(frame.game.score[0]);
+  m.score[1] = static_cast<int8_t>(frame.game.score[1]);
   m.num_robots = static_cast<int16_t>(frame.robots.size());
   for (const RobotSense& r : frame.robots) {
     robot_sense_t s;
@@ -73,6 +78,20 @@ sense_t to_lcm(const SenseFrame& frame) {
     s.truth = to_lcm(r.truth);
     s.ball_x_mm = r.ball_x_mm;
     s.ball_y_mm = r.ball_y_mm;
+    s.num_seen = static_cast<int16_t>(r.seen.size());
+    for (const Observation& o : r.seen) {
+      observation_t seen;
+      seen.kind = static_cast<int8_t>(o.kind);
+      seen.id = static_cast<int8_t>(o.id);
+      seen.distance_mm = o.distance_mm;
+      seen.heading_rad = o.heading_rad;
+      seen.image_x = o.image_x;
+      s.seen.push_back(seen);
+    }
+    s.sonar_left = r.sonar_left;
+    s.sonar_right = r.sonar_right;
+    s.penalised = r.penalised;
+    s.fallen = r.fallen;
     m.robots.push_back(s);
   }
   return m;
@@ -89,7 +108,13 @@ SenseFrame from_lcm(const sense_t& m) {
   frame.utime = m.utime;
   frame.frame = m.frame;
   frame.motion_ticks = m.motion_ticks;
-  frame.game_state = static_cast<GameState>(m.game_state);
+  frame.game.state = static_cast<GameState>(m.game_state);
+  frame.game.secs_remaining = m.secs_remaining;
+  frame.game.first_half = m.first_half;
+  if (m.kickoff_team < 0 || m.kickoff_team > 1)
+    throw MalformedMessage(what + ": kickoff_team " + std::to_string(m.kickoff_team) + " is not 0 or 1");
+  frame.game.kickoff_team = m.kickoff_team;
+  frame.game.score = {{m.score[0], m.score[1]}};
   for (const robot_sense_t& s : m.robots) {
     check_id(s.team, s.player, what);
     RobotSense r;
@@ -100,6 +125,20 @@ SenseFrame from_lcm(const sense_t& m) {
     check_finite(s.ball_y_mm, "ball_y_mm", what);
     r.ball_x_mm = s.ball_x_mm;
     r.ball_y_mm = s.ball_y_mm;
+    for (const observation_t& seen : s.seen) {
+      if (seen.kind < 0 || seen.kind > static_cast<int8_t>(ObjectKind::kOpponent))
+        throw MalformedMessage(what + ": unknown observation kind " + std::to_string(seen.kind));
+      check_finite(seen.distance_mm, "observation distance_mm", what);
+      check_finite(seen.heading_rad, "observation heading_rad", what);
+      check_finite(seen.image_x, "observation image_x", what);
+      r.seen.push_back({static_cast<ObjectKind>(seen.kind), seen.id, seen.distance_mm, seen.heading_rad, seen.image_x});
+    }
+    check_finite(s.sonar_left, "sonar_left", what);
+    check_finite(s.sonar_right, "sonar_right", what);
+    r.sonar_left = s.sonar_left;
+    r.sonar_right = s.sonar_right;
+    r.penalised = s.penalised;
+    r.fallen = s.fallen;
     frame.robots.push_back(r);
   }
   return frame;

@@ -16,6 +16,7 @@
 #include "touchline/hash.hpp"
 #include "touchline/join_reply_t.hpp"
 #include "touchline/join_t.hpp"
+#include "touchline/match_event_t.hpp"
 #include "touchline/lcm/match_recorder.hpp"
 #include "touchline/robot_status_t.hpp"
 #include "touchline/sim/lockstep.hpp"
@@ -26,6 +27,18 @@ namespace touchline::transport {
 namespace {
 
 std::atomic<bool> g_stop{false};
+
+std::string describe(const sim::MatchEvent& event) {
+  std::ostringstream out;
+  out << "at " << std::fixed << std::setprecision(1) << static_cast<double>(event.utime) * 1e-6 << " s: ";
+  switch (event.kind) {
+    case sim::MatchEvent::Kind::kPenalty: out << sim::describe(event.robot) << " penalised for " << event.text; break;
+    case sim::MatchEvent::Kind::kReleased: out << sim::describe(event.robot) << " " << event.text; break;
+    case sim::MatchEvent::Kind::kFall: out << sim::describe(event.robot) << " " << event.text; break;
+    default: out << event.text; break;
+  }
+  return out.str();
+}
 
 world_truth_t to_msg(const sim::TruthFrame& truth) {
   world_truth_t m;
@@ -41,6 +54,8 @@ world_truth_t to_msg(const sim::TruthFrame& truth) {
     t.team = static_cast<int8_t>(r.truth.id.team);
     t.player = static_cast<int8_t>(r.truth.id.player);
     t.active = r.active;
+    t.penalised = r.penalised;
+    t.fallen = r.fallen;
     t.body = to_lcm(r.truth.body);
     t.left_foot = to_lcm(r.truth.left_foot);
     t.right_foot = to_lcm(r.truth.right_foot);
@@ -78,7 +93,8 @@ class WorldNode {
     summary_.frames = match_.frame();
     summary_.sim_s = static_cast<double>(match_.utime()) * 1e-6;
     summary_.wall_s = static_cast<double>(wall_us() - start_us) * 1e-6;
-    publish_game_state(GameState::kFinished);
+    publish_events();
+    publish_game_state(true);
     publish_status_all("match over");
     return summary_;
   }
@@ -102,11 +118,12 @@ class WorldNode {
     if (def_.pacing != Pacing::kLockstep) pace(start_us);
     match_.advance();
     const auto bytes = publish(kTruthChannel, to_msg(match_.truth()));
+    publish_events();
     if (recorder_ && !recorder_->error().empty()) throw std::runtime_error(recorder_->error());
     truth_hash_.add(bytes.data(), bytes.size());
     summary_.truth_hash = truth_hash_.value();
     if (match_.frame() % kFramesPerSecond == 0) {
-      publish_game_state(GameState::kPlaying);
+      publish_game_state(false);
       publish_status_all("");
     }
     if (def_.progress && match_.frame() % (10 * kFramesPerSecond) == 0) {
@@ -243,16 +260,34 @@ class WorldNode {
       publish_status(id, member.active ? robot_status_t::ACTIVE : robot_status_t::TIMED_OUT, detail);
   }
 
-  void publish_game_state(GameState state) {
+  /// The game as the referee sees it; `finished` marks the end of the run for the shims
+  /// (also when it ends on the duration cap or a stop before the referee's FINISHED).
+  void publish_game_state(bool finished) {
+    const GameInfo game = match_.game();
     game_state_t msg;
     msg.utime = match_.utime();
-    msg.state = static_cast<int8_t>(state);
-    const double left_s = match_.config().match.duration_s - static_cast<double>(match_.utime()) * 1e-6;
-    msg.secs_remaining = static_cast<int32_t>(std::max(0.0, std::ceil(left_s)));
-    msg.first_half = 1;
-    msg.kickoff_team = 0;
-    msg.score[0] = msg.score[1] = 0;
+    msg.state = static_cast<int8_t>(finished ? GameState::kFinished : game.state);
+    msg.secs_remaining = game.secs_remaining;
+    msg.first_half = game.first_half ? 1 : 0;
+    msg.kickoff_team = static_cast<int8_t>(game.kickoff_team);
+    msg.score[0] = static_cast<int8_t>(game.score[0]);
+    msg.score[1] = static_cast<int8_t>(game.score[1]);
     publish(kGameChannel, msg);
+  }
+
+  void publish_events() {
+    for (const sim::MatchEvent& event : match_.take_events()) {
+      match_event_t msg;
+      msg.utime = event.utime;
+      msg.kind = static_cast<int8_t>(event.kind);
+      msg.team = static_cast<int8_t>(event.team);
+      msg.player = static_cast<int8_t>(event.robot.player);
+      msg.text = event.text;
+      if (event.kind == sim::MatchEvent::Kind::kStateChange || event.kind == sim::MatchEvent::Kind::kBallOut) msg.player = 0;
+      publish(kEventChannel, msg);
+      publish_game_state(false); // the game changed: tell the robots and tools at once
+      if (def_.progress) log_ << "sim_world: " << describe(event) << "\n" << std::flush;
+    }
   }
 
   static constexpr int kFramesPerSecond = 30;

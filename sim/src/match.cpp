@@ -1,6 +1,8 @@
 #include "touchline/sim/match.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <utility>
 
 namespace touchline::sim {
 
@@ -10,10 +12,37 @@ namespace {
 constexpr size_t kMaxPendingTicks = 2 * kMaxTicksPerFrame;
 } // namespace
 
-Match::Match(const WorldConfig& config)
+namespace {
+
+const char* state_name(GameState state) {
+  switch (state) {
+    case GameState::kInitial: return "INITIAL";
+    case GameState::kReady: return "READY";
+    case GameState::kSet: return "SET";
+    case GameState::kPlaying: return "PLAYING";
+    case GameState::kFinished: return "FINISHED";
+  }
+  return "?";
+}
+
+/// Uniform in [0, 1) from the raw bits: std:: distributions differ between standard
+/// libraries, and a seed must give the same match everywhere.
+double uniform01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+
+/// The camera's stream is seeded apart from the falls', so one never shifts the other.
+constexpr uint64_t kPerceptionSeedSalt = 0x9e3779b97f4a7c15ull;
+
+} // namespace
+
+Match::Match(const WorldConfig& config, uint64_t seed)
     : config_(config),
+      rng_(seed),
       world_(config.field, config.physics, config.match.foot_separation_mm),
-      roster_(config.match.team_size) {}
+      roster_(config.match.team_size),
+      perception_(Field(config.field), config.perception, seed ^ kPerceptionSeedSalt) {
+  if (config.rules.referee)
+    referee_.emplace(Field(config.field), config.rules, config.match.team_size, config.physics.ball_diameter_mm);
+}
 
 JoinReply Match::join(RobotId id, int64_t instance, int pid) {
   JoinReply reply = roster_.join(id, instance, pid);
@@ -31,23 +60,48 @@ void Match::start() {
   for (const auto& [id, member] : roster_.members()) place(id); // std::map: (team, player) order
   world_.place_ball(config_.match.ball_start_x_mm, config_.match.ball_start_y_mm);
   started_ = true;
+  judge(); // the referee starts its clock (INITIAL)
 }
 
-SenseFrame Match::sense() const {
+GameInfo Match::game() const {
+  if (referee_) return referee_->info();
+  GameInfo info; // no referee: PLAYING until the duration runs out
+  const double left_s = config_.match.duration_s - static_cast<double>(utime()) * 1e-6;
+  info.secs_remaining = static_cast<int>(std::max(0.0, std::ceil(left_s)));
+  return info;
+}
+
+std::vector<Viewer> Match::viewers() const {
+  std::vector<Viewer> all;
+  for (const auto& [id, robot] : on_field_)
+    all.push_back({id, world_.robot(robot.world_index).body, robot.head_yaw_rad, robot.head_pitch_rad});
+  return all;
+}
+
+SenseFrame Match::sense() {
   SenseFrame frame;
   frame.utime = utime();
   frame.frame = frame_;
   frame.motion_ticks = ticks_in_frame(frame_);
-  frame.game_state = GameState::kPlaying;
+  frame.game = game();
   const BallTruth ball = world_.ball();
+  const std::vector<Viewer> all = viewers();
+  size_t i = 0;
   for (const auto& [id, robot] : on_field_) {
+    const Viewer& me = all[i++];
     RobotSense sense;
     sense.id = id;
     sense.active = roster_.find(id)->active;
-    sense.truth = world_.robot(robot.world_index).body;
+    sense.truth = me.body;
     sense.ball_x_mm = ball.x_mm;
     sense.ball_y_mm = ball.y_mm;
-    frame.robots.push_back(sense);
+    sense.seen = perception_.observe(me, all, ball);
+    const SonarReading sonar = perception_.sonar(me, all);
+    sense.sonar_left = sonar.left;
+    sense.sonar_right = sonar.right;
+    sense.penalised = referee_ && referee_->penalised(id);
+    sense.fallen = fallen(robot);
+    frame.robots.push_back(std::move(sense));
   }
   return frame;
 }
@@ -87,31 +141,99 @@ void Match::time_out(RobotId id) {
   if (auto robot = on_field_.find(id); robot != on_field_.end()) robot->second.pending.clear();
 }
 
+bool Match::may_move(RobotId id, const OnField& robot) const {
+  return !fallen(robot) && !robot.stopped && (!referee_ || referee_->may_move(id));
+}
+
 void Match::advance() {
   std::vector<TickMotion> motions(static_cast<size_t>(world_.robot_count()));
   for (int tick = 0; tick < ticks_in_frame(frame_); ++tick) {
     for (auto& [id, robot] : on_field_) {
       TickMotion& motion = motions[static_cast<size_t>(robot.world_index)];
       motion = {};
-      if (!robot.pending.empty()) {
-        motion = robot.pending.front();
-        robot.pending.pop_front();
-      }
+      if (robot.pending.empty()) continue;
+      if (may_move(id, robot)) motion = robot.pending.front(); // else the robot's motion is lost
+      robot.pending.pop_front();
     }
     world_.step(motions);
   }
   ++frame_;
+  judge();
 }
+
+void Match::judge() {
+  for (auto& [id, robot] : on_field_) robot.stopped = false;
+  if (!referee_) return;
+  RefereeInput input;
+  input.utime = utime();
+  input.ball = world_.ball();
+  const int toucher = world_.last_ball_touch();
+  for (const auto& [id, robot] : on_field_) {
+    input.robots.push_back({id, world_.robot(robot.world_index).body, roster_.find(id)->active});
+    if (robot.world_index == toucher) input.last_touch_team = id.team;
+  }
+  carry_out(referee_->update(input));
+}
+
+void Match::carry_out(const RefereeDecision& d) {
+  for (const StateChange& change : d.state_changes)
+    events_.push_back({change.utime, MatchEvent::Kind::kStateChange, {}, -1, state_name(change.to)});
+  for (const GoalScored& goal : d.goals)
+    events_.push_back({goal.utime, MatchEvent::Kind::kGoal, {}, goal.team, "goal for team " + std::to_string(goal.team)});
+  for (const Penalty& penalty : d.penalties) {
+    events_.push_back({penalty.since_utime, MatchEvent::Kind::kPenalty, penalty.robot, penalty.robot.team,
+                       to_string(penalty.kind)});
+    if (penalty.kind == PenaltyKind::kPushing) fall_after_push(penalty.robot);
+  }
+  for (RobotId id : d.released)
+    events_.push_back({utime(), MatchEvent::Kind::kReleased, id, id.team, "back on the field"});
+  for (const RobotPlacement& placement : d.placements) {
+    auto robot = on_field_.find(placement.robot);
+    if (robot == on_field_.end()) continue;
+    world_.place_robot(robot->second.world_index, placement.pose);
+    robot->second.pending.clear(); // picked up: what it was doing is over
+  }
+  if (d.ball) {
+    world_.place_ball(d.ball->x_mm, d.ball->y_mm);
+    if (d.ball->why == BallPlacement::Why::kBallOut)
+      events_.push_back({utime(), MatchEvent::Kind::kBallOut, {}, -1, "ball out, put back"});
+  }
+  for (RobotId id : d.stopped)
+    if (auto robot = on_field_.find(id); robot != on_field_.end()) robot->second.stopped = true;
+}
+
+void Match::fall_after_push(RobotId pusher) {
+  // The pushed robot: the nearest opponent of the pusher (the referee names only the pusher).
+  const Pose2D at = world_.robot(on_field_.at(pusher).world_index).body;
+  OnField* victim = nullptr;
+  RobotId victim_id;
+  float nearest = config_.rules.collision.contact_distance_mm;
+  for (auto& [id, robot] : on_field_) {
+    if (id.team == pusher.team) continue;
+    const Pose2D body = world_.robot(robot.world_index).body;
+    const float d = std::hypot(body.x_mm - at.x_mm, body.y_mm - at.y_mm);
+    if (d < nearest) nearest = d, victim = &robot, victim_id = id;
+  }
+  if (!victim || uniform01(rng_) >= config_.rules.fall_probability) return;
+  victim->fallen_until_utime = utime() + static_cast<int64_t>(config_.rules.getup_s * 1e6);
+  victim->pending.clear();
+  events_.push_back({utime(), MatchEvent::Kind::kFall, victim_id, victim_id.team, "fell, pushed"});
+}
+
+std::vector<MatchEvent> Match::take_events() { return std::exchange(events_, {}); }
 
 TruthFrame Match::truth() const {
   TruthFrame truth;
   truth.utime = utime();
   truth.frame = frame_ - 1;
   truth.ball = world_.ball();
+  truth.game = game();
   for (const auto& [id, robot] : on_field_) {
     TruthFrame::Robot r;
     r.truth = world_.robot(robot.world_index);
     r.active = roster_.find(id)->active;
+    r.penalised = referee_ && referee_->penalised(id);
+    r.fallen = fallen(robot);
     r.head_yaw_rad = robot.head_yaw_rad;
     r.head_pitch_rad = robot.head_pitch_rad;
     truth.robots.push_back(r);
@@ -120,6 +242,7 @@ TruthFrame Match::truth() const {
 }
 
 bool Match::finished() const {
+  if (referee_ && referee_->state() == GameState::kFinished) return true;
   return static_cast<double>(utime()) >= static_cast<double>(config_.match.duration_s) * 1e6;
 }
 

@@ -6,7 +6,10 @@
 namespace touchline::sim {
 
 void bind(IniSchema& s, RulesDef& d) {
-  s.bind("rules.initial_s", &d.initial_s, "INITIAL before READY of each half, s")
+  s.bind("rules.referee", &d.referee, "play by the rules; false: the game stays PLAYING")
+      .bind("rules.fall_probability", &d.fall_probability, "chance a pushed robot falls, 0..1")
+      .bind("rules.getup_s", &d.getup_s, "a fallen robot lies this long, s")
+      .bind("rules.initial_s", &d.initial_s, "INITIAL before READY of each half, s")
       .bind("rules.ready_s", &d.ready_s, "READY, robots walk to kick-off positions, s")
       .bind("rules.set_s", &d.set_s, "SET, robots stand until the whistle, s")
       .bind("rules.half_s", &d.half_s, "playing time of a half, s")
@@ -58,6 +61,9 @@ void validate(const RulesDef& d) {
   require_non_negative("rules.leave_field_margin_mm", d.leave_field_margin_mm);
   require_non_negative("rules.ball_out_setback_mm", d.ball_out_setback_mm);
   require_non_negative("rules.ball_out_inset_mm", d.ball_out_inset_mm);
+  require_non_negative("rules.getup_s", d.getup_s);
+  if (!(d.fall_probability >= 0 && d.fall_probability <= 1))
+    throw ConfigError("rules.fall_probability must be 0..1 (got " + std::to_string(d.fall_probability) + ")");
 }
 
 } // namespace touchline::sim

@@ -8,6 +8,7 @@ from touchline_harness import (LCM_URL, nominal_distance, robot_entry, start_rob
 from truth_listener import TruthListener
 
 WALK_S = 10.0
+NO_REFEREE = ("--set", "rules.referee=false")  # calibration: no INITIAL/SET holding robots still
 
 
 def walked(summary_start: dict, summary_end: dict) -> tuple:
@@ -29,7 +30,7 @@ def start_pose(truth, team, player):
 
 def test_full_speed_forward_covers_the_nominal_distance(tmp_path, truth):
     walk = walk_def()
-    match = start_world(tmp_path, 1, WALK_S)
+    match = start_world(tmp_path, 1, WALK_S, *NO_REFEREE)
     start_robot(match, 0, 1, "walk", forward=walk["max_forward_mm_s"])
     summary = match.finish()
     start = start_pose(truth, 0, 1)
@@ -45,7 +46,7 @@ def test_full_speed_forward_covers_the_nominal_distance(tmp_path, truth):
 def test_full_speed_sideways_both_ways_covers_the_nominal_distance(tmp_path, truth):
     walk = walk_def()
     speed = walk["max_left_mm_s"]
-    match = start_world(tmp_path, 2, WALK_S, "--set", "match.team_size=4")
+    match = start_world(tmp_path, 2, WALK_S, "--set", "match.team_size=4", *NO_REFEREE)
     # Both end up walking towards +x, on opposite touchlines: team 0 faces +y, so its
     # right is +x; team 1 faces -y, so its left is +x.
     start_robot(match, 0, 4, "walk", left=-speed)
@@ -62,7 +63,7 @@ def test_full_speed_sideways_both_ways_covers_the_nominal_distance(tmp_path, tru
 def test_full_speed_turn_covers_the_nominal_angle(tmp_path, truth):
     walk = walk_def()
     rate = walk["max_turn_rad_s"]
-    match = start_world(tmp_path, 1, WALK_S)
+    match = start_world(tmp_path, 1, WALK_S, *NO_REFEREE)
     start_robot(match, 0, 1, "walk", turn=rate)
     summary = match.finish()
     truth.wait_for_frame(summary["frames"] - 1)

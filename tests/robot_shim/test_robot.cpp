@@ -48,6 +48,7 @@ TEST(Robot, OneFrameRunsTheBehaviourOnceAndTheFramesMotionTicks) {
   sense.truth = {1000, 0, kPi / 2};
   sense.ball_x_mm = 1000;
   sense.ball_y_mm = 500; // straight ahead of a robot facing +y
+  sense.seen.push_back({ObjectKind::kBall, 0, 500, 0, 0.5f});
   const SenseFrame frame = frame_with(sense, 2);
   const RobotAct act = robot.step(frame, frame.robots[0]);
 

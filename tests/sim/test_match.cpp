@@ -11,6 +11,7 @@ sim::WorldConfig small_config() {
   sim::WorldConfig config;
   config.match.team_size = 2;
   config.match.duration_s = 1;
+  config.rules.referee = false; // scheduling only; the referee's part has tests of its own below
   return config;
 }
 
@@ -151,4 +152,57 @@ TEST(Match, BallStartsWhereTheConfigSays) {
   match.start();
   EXPECT_FLOAT_EQ(match.world().ball().x_mm, 1200);
   EXPECT_FLOAT_EQ(match.world().ball().y_mm, -400);
+}
+
+namespace {
+sim::WorldConfig refereed_config() {
+  sim::WorldConfig config;
+  config.match.team_size = 1;
+  config.rules.initial_s = 1;
+  config.rules.ready_s = 2;
+  config.rules.set_s = 1;
+  return config;
+}
+} // namespace
+
+TEST(Match, RefereeHoldsRobotsStillInInitialAndSetAndTellsTheGame) {
+  sim::Match match(refereed_config());
+  match.join({0, 1}, 9, 0);
+  match.start();
+  EXPECT_EQ(match.sense().game.state, GameState::kInitial);
+  const Pose2D start = match.truth().robots[0].truth.body;
+  for (int f = 0; f < 20; ++f) { // INITIAL: the robot asks to walk but stays put
+    match.apply(forward_act({0, 1}, match.frame(), ticks_in_frame(match.frame()), 5.f), 9);
+    match.advance();
+  }
+  EXPECT_FLOAT_EQ(match.truth().robots[0].truth.body.y_mm, start.y_mm);
+  while (match.game().state != GameState::kReady) match.advance();
+  match.apply(forward_act({0, 1}, match.frame(), ticks_in_frame(match.frame()), 5.f), 9);
+  match.advance(); // READY: it walks
+  EXPECT_GT(match.truth().robots[0].truth.body.y_mm, start.y_mm + 10);
+  const auto events = match.take_events();
+  ASSERT_FALSE(events.empty());
+  EXPECT_EQ(events.front().kind, sim::MatchEvent::Kind::kStateChange);
+  EXPECT_EQ(events.front().text, "READY");
+  EXPECT_EQ(events.front().utime, 1000000); // exactly when INITIAL ran out
+}
+
+TEST(Match, RobotsSeeThroughTheCameraAndTheSeedFixesTheNoise) {
+  auto seen_from = [](uint64_t seed) {
+    sim::WorldConfig config;
+    config.match.team_size = 1;
+    const Pose2D robot = sim::initial_pose(sim::Field(config.field), 1, {0, 1});
+    config.match.ball_start_x_mm = robot.x_mm; // 800 mm in front of the robot on its touchline
+    config.match.ball_start_y_mm = robot.y_mm + 800;
+    sim::Match match(config, seed);
+    match.join({0, 1}, 9, 0);
+    match.start();
+    return match.sense().robots[0].seen;
+  };
+  const auto a = seen_from(7), b = seen_from(7), c = seen_from(8);
+  ASSERT_FALSE(a.empty());
+  EXPECT_EQ(a[0].kind, ObjectKind::kBall);
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i].distance_mm, b[i].distance_mm);
+  EXPECT_NE(a[0].distance_mm, c.empty() ? -1.f : c[0].distance_mm);
 }

@@ -64,6 +64,7 @@ RobotSense sensing_ball_ahead() {
   sense.truth = {1000, -500, kPi / 2};
   sense.ball_x_mm = 1000;
   sense.ball_y_mm = 0;
+  sense.seen.push_back({ObjectKind::kBall, 0, 500, 0, 0.5f}); // what the camera reports of it
   return sense;
 }
 

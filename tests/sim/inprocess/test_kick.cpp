@@ -79,6 +79,7 @@ Outcome play(const Scene& scene) {
   config.field.width_mm = 6000;
   config.match.team_size = 1;
   config.match.duration_s = scene.seconds;
+  config.rules.referee = false; // physics only: no INITIAL/SET holding the robot still
   inprocess::InProcessMatch match(config);
   api::ActionCommand::Body kick;
   kick.actionType = scene.type;

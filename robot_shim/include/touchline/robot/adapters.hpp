@@ -10,12 +10,16 @@
 
 namespace touchline::robot {
 
-/// Reads: the frame's game state. Writes: blackboard.gameController, blackboard.utime.
-void write_game_controller(const SenseFrame& frame, RobotId id, api::Blackboard& blackboard);
+/// Reads: the frame's game info, whether we are penalised. Writes:
+/// blackboard.gameController, blackboard.utime.
+void write_game_controller(const SenseFrame& frame, const RobotSense& sense, api::Blackboard& blackboard);
 
-/// Perfect localisation until the filter lands: reads the sensed truth pose and ball.
-/// Writes: blackboard.localisation, blackboard.vision.
-void write_perception(const SenseFrame& frame, const RobotSense& sense, api::Blackboard& blackboard);
+/// Reads: the camera's observations this frame. Writes: blackboard.vision (the nearest
+/// ball seen, if any).
+void write_vision(const SenseFrame& frame, const RobotSense& sense, api::Blackboard& blackboard);
+
+/// Reads: whether the robot lies on the ground. Writes: blackboard.motion.fallen.
+void write_fall(const RobotSense& sense, api::Blackboard& blackboard);
 
 /// A CPU clock in microseconds.
 using CpuClock = std::function<int64_t()>;

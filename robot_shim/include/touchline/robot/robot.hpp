@@ -8,6 +8,7 @@
 
 #include "touchline/frame.hpp"
 #include "touchline/robot/adapters.hpp"
+#include "touchline/robot/localisation_adapter.hpp"
 #include "touchline/robot/motion_adapter.hpp"
 #include "touchline/robot_api/behaviour.hpp"
 
@@ -23,6 +24,12 @@ struct BehaviourTimingDef {
   /// The clock a tick is measured with, microseconds: this thread's CPU time (tests
   /// inject their own).
   CpuClock cpu_clock = thread_cpu_us;
+};
+
+/// Where the robot's beliefs about its pose and the ball come from.
+struct LocalisationModeDef {
+  localisation::LocalisationDef filters; ///< the field the robot knows, the filters' noise models
+  bool perfect = false;                  ///< the robot's pose from the truth (the ball still from the camera)
 };
 
 /// Camera frames a behaviour tick of `cpu_us` occupies: ceil(cpu_us / 33.3 ms), at
@@ -43,7 +50,7 @@ struct BehaviourStats {
 class Robot {
  public:
   Robot(RobotId id, const WalkDef& walk, std::unique_ptr<api::Behaviour> behaviour,
-        BehaviourTimingDef timing = {}, const KickDef& kick = {});
+        BehaviourTimingDef timing = {}, const KickDef& kick = {}, const LocalisationModeDef& localisation = {});
 
   /// Runs one camera frame. `sense` is this robot's entry of `frame`.
   RobotAct step(const SenseFrame& frame, const RobotSense& sense);
@@ -74,6 +81,7 @@ class Robot {
   bool charge_cpu_;
   BehaviourAdapter behaviour_adapter_;
   MotionAdapter motion_;
+  LocalisationAdapter localisation_;
   BehaviourStats stats_;
   bool keep_behaviour_view_ = false;
   api::Blackboard behaviour_view_;

@@ -105,7 +105,7 @@ struct SenseFrame {
   int64_t utime = 0;  ///< simulated time at the frame start, microseconds
   int64_t frame = 0;  ///< camera frame index
   int motion_ticks = 3;
-  GameState game_state = GameState::kPlaying;
+  GameInfo game;              ///< the referee's view, as the GameController sends it
   std::vector<RobotSense> robots;
 
   const RobotSense* find(RobotId id) const {

@@ -1,15 +1,21 @@
 #pragma once
-// A match without transport: the world, the roster of robots and the camera-frame clock.
-// Each frame the match hands out a SenseFrame, takes the robots' RobotActs and steps the
-// world through the frame's 3-4 motion ticks. sim_world drives it over LCM; tests and the
-// in-process mode call it directly.
+// A match without transport: the world, the roster of robots, the referee, the camera and
+// sonar models, and the camera-frame clock. Each frame the match hands out a SenseFrame,
+// takes the robots' RobotActs, steps the world through the frame's 3-4 motion ticks and
+// lets the referee judge. sim_world drives it over LCM; tests and the in-process mode
+// call it directly. Every random draw comes from the seed, so a seed fixes the match.
 #include <cstdint>
 #include <deque>
 #include <map>
+#include <optional>
+#include <random>
 #include <vector>
 
 #include "touchline/frame.hpp"
 #include "touchline/sim/config.hpp"
+#include "touchline/sim/match_event.hpp"
+#include "touchline/sim/perception.hpp"
+#include "touchline/sim/referee.hpp"
 #include "touchline/sim/roster.hpp"
 #include "touchline/sim/world.hpp"
 
@@ -23,8 +29,11 @@ struct TruthFrame {
   struct Robot {
     RobotTruth truth;
     bool active = true;
+    bool penalised = false;
+    bool fallen = false;
     float head_yaw_rad = 0, head_pitch_rad = 0;
   };
+  GameInfo game;
   std::vector<Robot> robots; ///< sorted by (team, player)
 };
 
@@ -37,7 +46,7 @@ enum class ActOutcome {
 
 class Match {
  public:
-  explicit Match(const WorldConfig& config);
+  explicit Match(const WorldConfig& config, uint64_t seed = 1);
 
   /// A shim asks to play `id`. Before start() accepted robots wait off the field; after
   /// it, a new robot is placed at its initial pose at once.
@@ -47,8 +56,9 @@ class Match {
   void start();
   bool started() const { return started_; }
 
-  /// What the robots sense at the start of the current frame.
-  SenseFrame sense() const;
+  /// What the robots sense at the start of the current frame. Not const: the camera's
+  /// noise draws from the match's random stream (call it once per frame).
+  SenseFrame sense();
   /// Robots that must answer the current frame.
   std::vector<RobotId> active_robots() const;
 
@@ -58,12 +68,18 @@ class Match {
   /// The robot did not answer in time: it stands still and is inactive until it answers.
   void time_out(RobotId id);
 
-  /// Steps the world through the current frame's motion ticks; the next frame begins.
+  /// Steps the world through the current frame's motion ticks (robots that may not move
+  /// stand: penalised, fallen, or the game in INITIAL/SET/FINISHED), lets the referee
+  /// judge, carries out its decisions; the next frame begins.
   void advance();
+  /// Events since the last call, oldest first.
+  std::vector<MatchEvent> take_events();
+  GameInfo game() const;
   TruthFrame truth() const;
 
   bool finished() const;
   int64_t frame() const { return frame_; }
+  const std::optional<Referee>& referee() const { return referee_; }
   int64_t utime() const { return frame_start_utime(frame_); }
   const Roster& roster() const { return roster_; }
   const World& world() const { return world_; }
@@ -75,12 +91,24 @@ class Match {
     int world_index = 0;
     float head_yaw_rad = 0, head_pitch_rad = 0;
     std::deque<TickMotion> pending; ///< motions not yet stepped, oldest first
+    int64_t fallen_until_utime = -1; ///< lying on the ground until then
+    bool stopped = false;            ///< lost a ball contest this frame: its feet hold
   };
   void place(RobotId id);
+  bool may_move(RobotId id, const OnField& robot) const;
+  bool fallen(const OnField& robot) const { return robot.fallen_until_utime > utime(); }
+  void judge();
+  void carry_out(const RefereeDecision& decision);
+  void fall_after_push(RobotId pusher);
+  std::vector<Viewer> viewers() const;
 
   WorldConfig config_;
+  std::mt19937_64 rng_;  ///< falls; the camera has its own stream (seeded from the same seed)
   World world_;
   Roster roster_;
+  Perception perception_;
+  std::optional<Referee> referee_;
+  std::vector<MatchEvent> events_;
   std::map<RobotId, OnField> on_field_;
   int64_t frame_ = 0;
   bool started_ = false;

@@ -8,6 +8,8 @@
 namespace touchline::sim {
 
 struct RulesDef {
+  bool referee = true;     ///< play by these rules; false: no referee, the game stays PLAYING (calibration runs)
+
   // --- game states and the clock ---
   float initial_s = 1.f;   ///< INITIAL at the start of each half before READY, s (0: READY at once)
   float ready_s = 45.f;    ///< READY: robots walk to their kick-off positions, s (SPL: 45)
@@ -30,6 +32,10 @@ struct RulesDef {
   bool ball_out = true;         ///< put back a ball that left the field (else it stays where it is)
   float ball_out_setback_mm = 1000.f; ///< ball put back this far towards the last toucher's own goal, mm
   float ball_out_inset_mm = 0.f;      ///< ball put back this far inside the line it crossed, mm (0: on it)
+
+  // --- falls (beyond the thesis) ---
+  float fall_probability = 0.3f; ///< chance that the robot pushed in a pushing foul falls, [0, 1]
+  float getup_s = 5.f;           ///< a fallen robot lies this long before it stands again, s
 };
 
 /// Binds every RulesDef field to "rules.<name>".

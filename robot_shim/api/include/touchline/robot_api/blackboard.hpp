@@ -17,6 +17,7 @@ struct MotionBlackboard {
   ActionCommand::Body active;        ///< the body command being executed
   float headYaw = 0, headPitch = 0;  ///< rad, measured
   bool standing = true;              ///< the walk is not stepping
+  bool fallen = false;               ///< lying on the ground (it gets up by itself)
   int kickPhase = 0;                 ///< the kick or dribble running: 0 none, 1 prepare, 2 swing, 3 recover
   int64_t ticks = 0;                 ///< motion ticks run
 };
@@ -26,7 +27,7 @@ struct LocalisationBlackboard {
   AbsCoord robotPos;        ///< where the robot believes it is (field frame)
   AbsCoord ballPos;         ///< absolute ball estimate, theta unused
   RRCoord ballPosRR;        ///< ball relative to the robot
-  int ballLostCount = 0;    ///< frames since the ball was last seen
+  int ballLostCount = 1 << 20; ///< frames since the ball was last seen (huge: never seen)
   AbsCoord teamBallPos;     ///< the team's shared ball estimate
 };
 

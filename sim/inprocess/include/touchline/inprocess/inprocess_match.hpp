@@ -12,7 +12,7 @@ namespace touchline::inprocess {
 
 class InProcessMatch {
  public:
-  explicit InProcessMatch(const sim::WorldConfig& config) : match_(config) {}
+  explicit InProcessMatch(const sim::WorldConfig& config, uint64_t seed = 1) : match_(config, seed) {}
 
   /// Adds a robot before start(). Throws std::invalid_argument if the roster refuses it.
   robot::Robot& add_robot(RobotId id, const robot::WalkDef& walk, std::unique_ptr<api::Behaviour> behaviour);

@@ -19,6 +19,7 @@ constexpr const char* kSenseChannel = "TL_SENSE";
 constexpr const char* kTruthChannel = "TL_TRUTH";
 constexpr const char* kGameChannel = "TL_GAME";
 constexpr const char* kStatusChannel = "TL_STATUS";
+constexpr const char* kEventChannel = "TL_EVENT";
 constexpr const char* kJoinChannel = "TL_JOIN";
 constexpr const char* kJoinReplyChannel = "TL_JOIN_REPLY";
 constexpr const char* kActChannelPattern = "TL_ACT_.*";
