@@ -62,7 +62,8 @@ std::string behaviour_list() {
 
 int main(int argc, char** argv) {
   int team = -1, player = -1;
-  std::string behaviour_name = "stand", walk_config, kick_config, python_dir = TOUCHLINE_PYTHON_DIR;
+  std::string behaviour_name = "stand", walk_config, kick_config, field_config, python_dir = TOUCHLINE_PYTHON_DIR;
+  robot::LocalisationModeDef localisation;
   std::vector<std::string> param_args;
   transport::RobotNodeDef node;
   robot::BehaviourTimingDef timing;
@@ -84,6 +85,8 @@ int main(int argc, char** argv) {
      "(33.3 ms) of CPU makes the robot miss frames as on the robot (the last request stays in force)")
     ("walk-config", po::value(&walk_config), "walk parameters file ([walk] section); default: the built-in walk")
     ("kick-config", po::value(&kick_config), "kick and dribble parameters file ([kick], [dribble]); default: the built-in kick")
+    ("field-config", po::value(&field_config), "the world config whose [field] the robot knows (landmarks for localisation); default: SPL 2011")
+    ("perfect-localisation", po::bool_switch(&localisation.perfect), "the robot's pose from the truth instead of the filter (the ball still from the camera)")
     ("lcm-url", po::value(&node.lcm_url)->default_value(node.lcm_url), "LCM provider URL")
     ("join-timeout", po::value(&node.join_timeout_s)->default_value(node.join_timeout_s), "wall seconds to wait for sim_world to accept us")
     ("world-timeout", po::value(&node.world_timeout_s)->default_value(node.world_timeout_s), "wall seconds of silence from sim_world before exiting")
@@ -109,6 +112,7 @@ int main(int argc, char** argv) {
     if (node.snapshot_every < 0) throw po::error("--snapshot-every must be >= 0");
     if (!walk_config.empty()) walk = robot::load_walk_def(walk_config);
     if (!kick_config.empty()) kick = robot::load_kick_def(kick_config);
+    if (!field_config.empty()) localisation.filters.field = robot::localisation::load_field_map(field_config);
     if (const auto module = python_module(behaviour_name)) {
       // Python's own signal handlers stay off: SIGINT/SIGTERM stop the shim (below); no
       // program directory on sys.path: the behaviour's modules come from --python-dir alone.
@@ -141,7 +145,7 @@ int main(int argc, char** argv) {
   std::signal(SIGINT, [](int) { transport::request_robot_stop(); });
   std::signal(SIGTERM, [](int) { transport::request_robot_stop(); });
   try {
-    robot::Robot robot({team, player}, walk, std::move(behaviour), timing, kick);
+    robot::Robot robot({team, player}, walk, std::move(behaviour), timing, kick, localisation);
     robot.set_behaviour_name(describe_behaviour(behaviour_name, parse_params(param_args)));
     switch (transport::run_robot(robot, node, std::cerr)) {
       case transport::RobotExit::kMatchOver: return 0;

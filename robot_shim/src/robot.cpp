@@ -66,6 +66,8 @@ RobotAct Robot::step(const SenseFrame& frame, const RobotSense& sense) {
   const Pose2D odometry = motion_.walk().odometry();
   act.odometry = odometry;
   act.behaviour_cpu_us = stats_.ticked_last_step ? stats_.last_cpu_us : 0;
+  const api::AbsCoord& believed = blackboard_.localisation.robotPos;
+  act.localised = {believed.x, believed.y, believed.theta};
   return act;
 }
 

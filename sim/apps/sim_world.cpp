@@ -49,7 +49,10 @@ void write_summary_json(const std::string& path, const sim::Match& match, const 
         << ", \"frames_answered\": " << (m ? m->frames_answered : 0)
         << ", \"frames_missed\": " << (m ? m->frames_missed : 0)
         << ", \"behaviour_cpu_us_mean\": " << (m ? m->behaviour_cpu_us_mean() : 0)
-        << ", \"behaviour_cpu_us_max\": " << (m ? m->behaviour_cpu_us_max : 0) << ", \"x_mm\": " << r.truth.body.x_mm
+        << ", \"behaviour_cpu_us_max\": " << (m ? m->behaviour_cpu_us_max : 0)
+        << ", \"localisation_rms_mm\": " << (m ? m->localisation_rms_mm() : 0)
+        << ", \"localisation_rms_rad\": " << (m ? m->localisation_rms_rad() : 0)
+        << ", \"penalised\": " << (r.penalised ? "true" : "false") << ", \"x_mm\": " << r.truth.body.x_mm
         << ", \"y_mm\": " << r.truth.body.y_mm << ", \"theta_rad\": " << r.truth.body.theta_rad << "}";
   }
   out << "\n  ]\n}\n";

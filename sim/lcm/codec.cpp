@@ -162,6 +162,7 @@ act_t to_lcm(const RobotAct& act, int64_t utime, int64_t instance) {
   m.leds = act.leds;
   m.odometry = to_lcm(act.odometry);
   m.behaviour_cpu_us = static_cast<int32_t>(act.behaviour_cpu_us);
+  m.localised = to_lcm(act.localised);
   return m;
 }
 
@@ -187,6 +188,7 @@ RobotAct from_lcm(const act_t& m) {
   act.leds = m.leds;
   act.odometry = from_lcm(m.odometry, "odometry", what);
   act.behaviour_cpu_us = m.behaviour_cpu_us;
+  act.localised = from_lcm(m.localised, "localised", what);
   return act;
 }
 

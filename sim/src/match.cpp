@@ -1,5 +1,7 @@
 #include "touchline/sim/match.hpp"
 
+#include "touchline/angles.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -125,6 +127,10 @@ ActOutcome Match::apply(const RobotAct& act, int64_t instance, bool accept_late)
   ++member->frames_answered;
   member->behaviour_cpu_us_sum += act.behaviour_cpu_us;
   member->behaviour_cpu_us_max = std::max(member->behaviour_cpu_us_max, act.behaviour_cpu_us);
+  // The belief answers this frame's sense, taken from the world as it still is.
+  const Pose2D truth = world_.robot(robot->second.world_index).body;
+  member->localisation_sq_mm_sum += std::pow(act.localised.x_mm - truth.x_mm, 2) + std::pow(act.localised.y_mm - truth.y_mm, 2);
+  member->localisation_sq_rad_sum += std::pow(normalise_angle(act.localised.theta_rad - truth.theta_rad), 2);
   for (int i = 0; i < act.motion_ticks && i < kMaxTicksPerFrame; ++i)
     robot->second.pending.push_back({act.left[i], act.right[i]});
   while (robot->second.pending.size() > kMaxPendingTicks) robot->second.pending.pop_front();

@@ -1,6 +1,16 @@
 #include "touchline/sim/roster.hpp"
 
+#include <cmath>
+
 namespace touchline::sim {
+
+double Member::localisation_rms_mm() const {
+  return frames_answered ? std::sqrt(localisation_sq_mm_sum / static_cast<double>(frames_answered)) : 0;
+}
+
+double Member::localisation_rms_rad() const {
+  return frames_answered ? std::sqrt(localisation_sq_rad_sum / static_cast<double>(frames_answered)) : 0;
+}
 
 std::string describe(RobotId id) {
   return "team " + std::to_string(id.team) + " player " + std::to_string(id.player);
@@ -14,7 +24,10 @@ JoinReply Roster::join(RobotId id, int64_t instance, int pid) {
                        std::to_string(team_size_) + " (players 1.." + std::to_string(team_size_) + ")"};
   auto it = members_.find(id);
   if (it == members_.end()) {
-    members_[id] = Member{instance, pid, true, 0, 0, 0, 0};
+    Member member;
+    member.instance = instance;
+    member.pid = pid;
+    members_[id] = member;
     return {true, ""};
   }
   Member& member = it->second;

@@ -206,3 +206,19 @@ TEST(Match, RobotsSeeThroughTheCameraAndTheSeedFixesTheNoise) {
   for (size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i].distance_mm, b[i].distance_mm);
   EXPECT_NE(a[0].distance_mm, c.empty() ? -1.f : c[0].distance_mm);
 }
+
+TEST(Match, LocalisationErrorOfTheRobotsBeliefIsMeasuredAgainstTruth) {
+  sim::Match match(small_config());
+  match.join({0, 1}, 9, 0);
+  match.start();
+  for (int f = 0; f < 4; ++f) {
+    RobotAct act = forward_act({0, 1}, match.frame(), ticks_in_frame(match.frame()), 0.f);
+    const Pose2D truth = match.sense().robots[0].truth;
+    act.localised = {truth.x_mm + 30, truth.y_mm - 40, truth.theta_rad + 0.1f}; // 50 mm, 0.1 rad off
+    match.apply(act, 9);
+    match.advance();
+  }
+  const sim::Member* member = match.roster().find({0, 1});
+  EXPECT_NEAR(member->localisation_rms_mm(), 50, 1e-3);
+  EXPECT_NEAR(member->localisation_rms_rad(), 0.1, 1e-6);
+}

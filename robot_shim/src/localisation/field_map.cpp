@@ -1,5 +1,7 @@
 #include "touchline/robot/localisation/field_map.hpp"
 
+#include "touchline/ini.hpp"
+
 namespace touchline::robot::localisation {
 
 namespace {
@@ -52,6 +54,19 @@ std::vector<Landmark> FieldMap::landmarks() const {
                           ObjectKind::kPenaltyMark})
     for (int id = 0; id < landmark_count(kind); ++id) all.push_back({kind, id, *landmark(kind, id)});
   return all;
+}
+
+FieldMap load_field_map(const std::string& path) {
+  FieldMap map;
+  IniSchema schema("field");
+  schema.bind("field.length_mm", &map.length_mm, "between the goal lines, mm")
+      .bind("field.width_mm", &map.width_mm, "between the touchlines, mm")
+      .bind("field.goal_width_mm", &map.goal_width_mm, "between the posts' centres, mm")
+      .bind("field.penalty_mark_distance_mm", &map.penalty_mark_distance_mm, "from the goal line, mm");
+  schema.read_file(path, /*ignore_unknown=*/true);
+  if (!(map.length_mm > 0 && map.width_mm > 0 && map.goal_width_mm > 0 && map.goal_width_mm < map.width_mm))
+    throw ConfigError(path + ": [field] sizes must be positive with the goal narrower than the field");
+  return map;
 }
 
 } // namespace touchline::robot::localisation

@@ -8,11 +8,11 @@ namespace po = boost::program_options;
 namespace touchline {
 
 namespace {
-void store_stream(const po::options_description& options, std::istream& in,
-                  const std::string& origin) {
+void store_stream(const po::options_description& options, std::istream& in, const std::string& origin,
+                  bool ignore_unknown = false) {
   try {
     po::variables_map vm;
-    po::store(po::parse_config_file(in, options, /*allow_unregistered=*/false), vm);
+    po::store(po::parse_config_file(in, options, ignore_unknown), vm);
     po::notify(vm);
   } catch (const po::error& e) {
     throw ConfigError(origin + ": " + e.what());
@@ -20,10 +20,10 @@ void store_stream(const po::options_description& options, std::istream& in,
 }
 } // namespace
 
-void IniSchema::read_file(const std::string& path) const {
+void IniSchema::read_file(const std::string& path, bool ignore_unknown) const {
   std::ifstream in(path);
   if (!in) throw ConfigError(path + ": cannot open config file");
-  store_stream(options_, in, path);
+  store_stream(options_, in, path, ignore_unknown);
 }
 
 void IniSchema::apply_override(const std::string& assignment) const {

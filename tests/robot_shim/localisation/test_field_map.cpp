@@ -2,6 +2,7 @@
 // agreement with the world's own field geometry (the one place a test may look at both).
 #include <gtest/gtest.h>
 
+#include "touchline/ini.hpp"
 #include "touchline/robot/localisation/field_map.hpp"
 #include "touchline/sim/field.hpp"
 
@@ -67,3 +68,16 @@ TEST(FieldMap, GoalPostsAgreeWithTheWorldsField) {
 
 } // namespace
 } // namespace touchline::robot::localisation
+
+namespace {
+
+TEST(LoadFieldMap, ReadsTheFieldSectionOfTheWorldsConfigAndSkipsTheRest) {
+  const auto map = touchline::robot::localisation::load_field_map(TOUCHLINE_SOURCE_DIR "/config/spl2020.ini");
+  EXPECT_EQ(map.length_mm, 9000.f);
+  EXPECT_EQ(map.width_mm, 6000.f);
+  const auto classic = touchline::robot::localisation::load_field_map(TOUCHLINE_SOURCE_DIR "/config/spl2011.ini");
+  EXPECT_EQ(classic.length_mm, 6000.f);
+  EXPECT_THROW(touchline::robot::localisation::load_field_map("/nonexistent.ini"), touchline::ConfigError);
+}
+
+} // namespace

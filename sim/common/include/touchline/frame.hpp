@@ -128,6 +128,7 @@ struct RobotAct {
   int32_t leds = 0;         ///< chest LED, 0xRRGGBB
   Pose2D odometry;          ///< the walk's dead-reckoned body pose (odometry frame)
   int64_t behaviour_cpu_us = 0; ///< CPU time of this frame's behaviour tick (thread CPU clock)
+  Pose2D localised;             ///< where the robot believes it is (field frame)
 };
 
 } // namespace touchline

@@ -25,8 +25,10 @@ class IniSchema {
     return *this;
   }
 
-  /// Reads `path`, setting every bound field present there. Throws ConfigError.
-  void read_file(const std::string& path) const;
+  /// Reads `path`, setting every bound field present there. Throws ConfigError. With
+  /// `ignore_unknown`, keys this schema does not bind are skipped (reading one section of
+  /// a file that has others).
+  void read_file(const std::string& path, bool ignore_unknown = false) const;
 
   /// Applies "section.key=value" overrides (e.g. from the command line). Throws ConfigError.
   void apply_override(const std::string& assignment) const;

@@ -1,4 +1,5 @@
 #pragma once
+#include <string>
 // The robot's own map of the field's landmarks, built from the few field dimensions it
 // needs (read by the shim from the same config file the world uses). The robot never
 // reads the world's geometry: this map and the world's camera must agree only through
@@ -40,6 +41,10 @@ struct FieldMap {
   /// Every landmark, for tests and tools.
   std::vector<Landmark> landmarks() const;
 };
+
+/// The field dimensions from a world config file's [field] section (the same file the
+/// world reads; other sections are skipped). Throws touchline::ConfigError.
+FieldMap load_field_map(const std::string& path);
 
 /// Whether `kind` is a fixed landmark (as opposed to the ball or a robot).
 bool is_landmark(ObjectKind kind);
