@@ -4,8 +4,8 @@ for them, shuts everything down cleanly on Ctrl-C or when any process fails (nam
 and why), and prints what happened.
 
 Every match is recorded to an LCM event log (lcm-logger format) named by date and seed.
-Until the behaviour runtime lands, every robot runs the C++ `goto` behaviour towards its
-kick-off position, so robots walk on for a purpose.
+By default every robot runs the Python behaviour (behaviour_py) with one skill; roles
+come with the team behaviour.
 """
 from __future__ import annotations
 
@@ -34,7 +34,12 @@ FORMATION = [(-0.9, 0.0, 0.0), (-0.6, 0.0, 0.0), (-0.3, 0.4, 0.0), (-0.3, -0.4, 
 def parse_args(argv: list[str]) -> argparse.Namespace:
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     p.add_argument("--team-size", type=int, default=4, help="robots per team, 1..7 (default 4)")
-    p.add_argument("--duration", type=float, default=120.0, help="simulated seconds (default 120)")
+    p.add_argument("--duration", type=float, help="stop after this many simulated seconds "
+                   "(default: the referee ends the match after two halves)")
+    p.add_argument("--behaviour", choices=["py", "goto"], default="py",
+                   help="py: every robot runs the Python behaviour (behaviour_py) with --skill; "
+                        "goto: the C++ goto behaviour walks each robot to its kick-off spot")
+    p.add_argument("--skill", default="LineUpAndKick", help="the Python behaviour's skill (default LineUpAndKick)")
     p.add_argument("--config", type=Path, default=ROOT / "config" / "spl2011.ini", help="world config")
     p.add_argument("--walk-config", type=Path, default=ROOT / "config" / "walk.ini", help="walk config")
     p.add_argument("--mode", choices=["lockstep", "realtime", "free"], default="lockstep")
@@ -51,28 +56,31 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     args = p.parse_args(argv)
     if not 1 <= args.team_size <= 7:
         p.error("--team-size must be 1..7")
-    if args.duration <= 0:
+    if args.duration is not None and args.duration <= 0:
         p.error("--duration must be > 0")
     return args
 
 
 def kickoff_targets(team_size: int, half_length: float, half_width: float) -> list:
+    """Each team's formation in its own frame (the robot API's: +x towards the opponent
+    goal), so both teams get the same targets."""
     targets = []
     for team in (0, 1):
-        sign = -1 if team == 1 else 1  # team 1 mirrors team 0 through the centre
         for player in range(1, team_size + 1):
             fx, fy, theta = FORMATION[player - 1]
-            x, y = sign * fx * half_length, sign * fy * half_width
-            targets.append((team, player, x, y, theta if team == 0 else 3.14159265))
+            targets.append((team, player, fx * half_length, fy * half_width, theta))
     return targets
 
 
-def field_half_sizes(config: Path) -> tuple:
+def read_config(config: Path) -> tuple:
+    """(half length, half width, match duration cap) from a world config."""
     import configparser
     ini = configparser.ConfigParser(inline_comment_prefixes=("#", ";"))
     ini.read(config)
     field = ini["field"] if "field" in ini else {}
-    return float(field.get("length_mm", 6000)) / 2, float(field.get("width_mm", 4000)) / 2
+    match = ini["match"] if "match" in ini else {}
+    return (float(field.get("length_mm", 6000)) / 2, float(field.get("width_mm", 4000)) / 2,
+            float(match.get("duration_s", 1800)))
 
 
 class Launcher:
@@ -124,7 +132,8 @@ class Launcher:
             stamp = datetime.datetime.now().strftime("%Y-%m-%d_%H%M%S")
             log = a.log_dir / f"{stamp}_seed{a.seed}.lcmlog"
             log.parent.mkdir(parents=True, exist_ok=True)
-        watch = MatchWatch(a.lcm_url, a.duration, show_bar=sys.stdout.isatty() and not a.no_progress)
+        self.half_length, self.half_width, duration_cap = read_config(a.config)
+        watch = MatchWatch(a.lcm_url, a.duration or duration_cap, show_bar=sys.stdout.isatty() and not a.no_progress)
         try:
             rc = self.play(bin_world, bin_shim, watch, log)
         finally:
@@ -137,18 +146,24 @@ class Launcher:
     def play(self, bin_world: Path, bin_shim: Path, watch: MatchWatch, log: Path | None) -> int:
         a = self.args
         summary_path = self.logdir / "summary.json"
-        targets = kickoff_targets(a.team_size, *field_half_sizes(a.config))
+        targets = kickoff_targets(a.team_size, self.half_length, self.half_width)
         self.start("sim_world", [bin_world, "--config", a.config, "--set", f"match.team_size={a.team_size}",
-                                 "--duration", a.duration, "--mode", a.mode, "--speed", a.speed, "--seed", a.seed,
+                                 *(["--duration", a.duration] if a.duration else []),
+                                 "--mode", a.mode, "--speed", a.speed, "--seed", a.seed,
                                  "--lcm-url", a.lcm_url, "--summary", summary_path, "--quiet",
                                  *(["--log", log] if log else [])])
         for team, player, x, y, theta in targets:
+            if a.behaviour == "goto":
+                behaviour = ["--behaviour", "goto", "--param", f"x={x:.0f}", "--param", f"y={y:.0f}",
+                             "--param", f"theta={theta:.3f}"]
+            else:
+                behaviour = ["--behaviour", "py", "--param", f"skill={a.skill}"]
             self.start(f"robot_shim {team}/{player}",
                        [bin_shim, "--team", team, "--player", player, "--walk-config", a.walk_config,
-                        "--lcm-url", a.lcm_url, "--behaviour", "goto", "--param", f"x={x:.0f}",
-                        "--param", f"y={y:.0f}", "--param", f"theta={theta:.3f}"])
-        print(f"launch: {2 * a.team_size} robots, {a.duration:.0f} s simulated, {a.mode} mode, seed {a.seed}",
-              flush=True)
+                        "--field-config", a.config, "--lcm-url", a.lcm_url, *behaviour])
+        length = f"{a.duration:.0f} s simulated" if a.duration else "two halves"
+        what = a.skill if a.behaviour == "py" else "goto kick-off spots"
+        print(f"launch: {2 * a.team_size} robots ({what}), {length}, {a.mode} mode, seed {a.seed}", flush=True)
         world = self.procs[0][1]
         while world.poll() is None:
             if self.interrupted:
@@ -167,6 +182,11 @@ class Launcher:
             return 1
         summary = json.loads(summary_path.read_text())
         summary["events"] = [{"sim_s": t, "what": line} for t, line in watch.events]
+        summary["goals"] = [{"sim_s": e.utime / 1e6, "team": e.team} for e in watch.match_events if e.kind == e.GOAL]
+        summary["penalties"] = [{"sim_s": e.utime / 1e6, "team": e.team, "player": e.player, "kind": e.text}
+                                for e in watch.match_events if e.kind == e.PENALTY]
+        summary["falls"] = [{"sim_s": e.utime / 1e6, "team": e.team, "player": e.player}
+                            for e in watch.match_events if e.kind == e.FALL]
         summary["score"] = list(watch.score)
         self.report(summary, targets)
         if a.json:
@@ -178,21 +198,40 @@ class Launcher:
         print(f"Match: {summary['sim_s']:.0f} s simulated in {summary['wall_s']:.1f} s (x{summary['rtf']:.1f} real time), "
               f"{a.mode} mode, seed {a.seed}, score {summary['score'][0]}:{summary['score'][1]}, "
               f"truth hash {summary['truth_hash']}")
-        print(f"{'robot':<14}{'answered':>9}{'missed':>8}{'behaviour CPU µs':>19}   {'ended at (mm)':<18}{'kick-off spot off by':>21}")
+        goals = ", ".join(f"team {g['team']} at {clock(g['sim_s'])}" for g in summary["goals"]) or "none"
+        print(f"Goals: {goals}")
+        kinds = {}
+        for p in summary["penalties"]:
+            kinds[p["kind"]] = kinds.get(p["kind"], 0) + 1
+        print("Penalties: " + (", ".join(f"{k} {n}" for k, n in sorted(kinds.items())) or "none")
+              + f"; falls: {len(summary['falls'])}")
+        last = "kick-off spot off by" if a.behaviour == "goto" else ""
+        print(f"{'robot':<12}{'answered':>9}{'missed':>7}{'behaviour CPU µs':>19}{'localisation rms':>20}"
+              f"{'penalties':>10}   {'ended at (mm)':<16}{last}")
         for team, player, x, y, _ in targets:
             r = next((r for r in summary["robots"] if r["team"] == team and r["player"] == player), None)
             name = f"team {team} #{player}"
             if r is None:
-                print(f"{name:<14}  never joined")
+                print(f"{name:<12}  never joined")
                 continue
-            err = ((r["x_mm"] - x) ** 2 + (r["y_mm"] - y) ** 2) ** 0.5
             cpu = f"{r['behaviour_cpu_us_mean']} mean {r['behaviour_cpu_us_max']} max"
+            loc = f"{r['localisation_rms_mm']:.0f} mm {r['localisation_rms_rad']:.2f} rad"
+            fouls = sum(1 for p in summary["penalties"] if p["team"] == team and p["player"] == player)
             where = f"({r['x_mm']:.0f}, {r['y_mm']:.0f})"
-            print(f"{name:<14}{r['frames_answered']:>9}{r['frames_missed']:>8}{cpu:>19}   {where:<18}{err:>18.0f} mm")
+            off = ""
+            if a.behaviour == "goto":  # targets are in the team's own frame; team 1's is turned by pi
+                tx, ty = (x, y) if team == 0 else (-x, -y)
+                off = f"{((r['x_mm'] - tx) ** 2 + (r['y_mm'] - ty) ** 2) ** 0.5:.0f} mm"
+            print(f"{name:<12}{r['frames_answered']:>9}{r['frames_missed']:>7}{cpu:>19}{loc:>20}{fouls:>10}   "
+                  f"{where:<16}{off}")
         for event in summary["events"]:
             print(f"  at {event['sim_s']:6.1f} s: {event['what']}")
         if summary["malformed"] or summary["stale"]:
             print(f"  malformed messages ignored: {summary['malformed']}, late answers dropped: {summary['stale']}")
+
+
+def clock(sim_s: float) -> str:
+    return f"{int(sim_s // 60)}:{int(sim_s % 60):02d}"
 
 
 def main(argv: list[str]) -> int:

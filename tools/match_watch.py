@@ -10,16 +10,19 @@ import time
 class MatchWatch:
     def __init__(self, lcm_url: str, duration_s: float, show_bar: bool):
         import lcm
-        from touchline import game_state_t, robot_status_t
+        from touchline import game_state_t, match_event_t, robot_status_t
 
-        self._game_t, self._status_t = game_state_t, robot_status_t
+        self._game_t, self._status_t, self._event_t = game_state_t, robot_status_t, match_event_t
         self.bus = lcm.LCM(lcm_url)
         self.bus.subscribe("TL_GAME", self._on_game)
         self.bus.subscribe("TL_STATUS", self._on_status)
+        self.bus.subscribe("TL_EVENT", self._on_event)
         self.sim_s = 0.0
         self.score = (0, 0)
         self.status: dict = {}   # (team, player) -> last robot_status_t
-        self.events: list = []   # (sim_s, line) for state changes worth a summary line
+        self.events: list = []   # (sim_s, line) for robot trouble worth a summary line
+        self.match_events: list = []  # decoded match_event_t: goals, penalties, falls, states
+        self.state = "INITIAL"
         self._start = time.monotonic()
         self._stop = threading.Event()
         self._bar = None
@@ -41,13 +44,19 @@ class MatchWatch:
         self.score = tuple(msg.score)
         if self._bar is not None:
             self._bar.n = min(self._bar.total, round(self.sim_s))
-            self._bar.set_postfix_str(f"x{self.real_time_factor():.1f} score {self.score[0]}:{self.score[1]}")
+            self._bar.set_postfix_str(f"x{self.real_time_factor():.1f} {self.state} score {self.score[0]}:{self.score[1]}")
 
     def _on_status(self, channel: str, data: bytes) -> None:
         msg = self._status_t.decode(data)
         self.status[(msg.team, msg.player)] = msg
         if msg.state in (msg.TIMED_OUT, msg.REJOINED, msg.REJECTED) and msg.detail:
             self.events.append((msg.utime / 1e6, f"team {msg.team} player {msg.player} {msg.detail}"))
+
+    def _on_event(self, channel: str, data: bytes) -> None:
+        msg = self._event_t.decode(data)
+        self.match_events.append(msg)
+        if msg.kind == msg.STATE_CHANGE:
+            self.state = msg.text
 
     def real_time_factor(self) -> float:
         return self.sim_s / max(1e-9, time.monotonic() - self._start)

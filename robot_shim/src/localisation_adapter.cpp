@@ -2,7 +2,31 @@
 
 #include <cmath>
 
+#include "touchline/angles.hpp"
+
 namespace touchline::robot {
+
+namespace {
+
+api::AbsCoord turned(const api::AbsCoord& c) { return {-c.x, -c.y, normalise_angle(c.theta + kPi)}; }
+
+/// Team 1 sees the field turned by pi: its own goal at -x too.
+void to_team_frame(api::LocalisationBlackboard& loc) {
+  loc.robotPos = turned(loc.robotPos);
+  loc.ballPos = turned(loc.ballPos);
+  loc.ballPos.theta = 0;
+  loc.teamBallPos = turned(loc.teamBallPos);
+  loc.teamBallPos.theta = 0;
+}
+
+} // namespace
+
+Pose2D to_team_frame(const Pose2D& world, int team) {
+  if (team == 0) return world;
+  return {-world.x_mm, -world.y_mm, normalise_angle(world.theta_rad + kPi)};
+}
+
+Pose2D to_world_frame(const Pose2D& own, int team) { return to_team_frame(own, team); } // a half turn is its own inverse
 
 void LocalisationAdapter::tick(const SenseFrame& frame, const RobotSense& sense, api::Blackboard& blackboard) {
   const bool back_from_penalty = was_penalised_ && !sense.penalised;
@@ -13,17 +37,19 @@ void LocalisationAdapter::tick(const SenseFrame& frame, const RobotSense& sense,
   }
   if (!localiser_) {
     localiser_.emplace(def_, sense.truth); // put down here by the team (or the referee)
-  } else if (back_from_penalty) {
+  } else if (back_from_penalty || sense.placed) {
     localiser_->reset(sense.truth);
   }
   const api::AbsCoord& odometry = blackboard.motion.odometry;
   localiser_->frame(frame.utime, Pose2D{odometry.x, odometry.y, odometry.theta}, sense.seen);
-  localiser_->write(blackboard.localisation);
+  localiser_->write(blackboard.localisation); // in the world frame: the landmark map is team 0's
+  if (sense.id.team == 1) to_team_frame(blackboard.localisation);
 }
 
 void LocalisationAdapter::tick_perfect(const RobotSense& sense, api::Blackboard& blackboard) {
   auto& loc = blackboard.localisation;
-  loc.robotPos = {sense.truth.x_mm, sense.truth.y_mm, sense.truth.theta_rad};
+  const Pose2D own = to_team_frame(sense.truth, sense.id.team);
+  loc.robotPos = {own.x_mm, own.y_mm, own.theta_rad};
   const api::VisionBlackboard& vision = blackboard.vision;
   if (vision.ballSeen) {
     // Where the camera saw it, from the exact pose: only the camera's own noise remains.

@@ -67,7 +67,7 @@ RobotAct Robot::step(const SenseFrame& frame, const RobotSense& sense) {
   act.odometry = odometry;
   act.behaviour_cpu_us = stats_.ticked_last_step ? stats_.last_cpu_us : 0;
   const api::AbsCoord& believed = blackboard_.localisation.robotPos;
-  act.localised = {believed.x, believed.y, believed.theta};
+  act.localised = to_world_frame({believed.x, believed.y, believed.theta}, id_.team);
   return act;
 }
 

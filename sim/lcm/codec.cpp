@@ -92,6 +92,7 @@ sense_t to_lcm(const SenseFrame& frame) {
     s.sonar_right = r.sonar_right;
     s.penalised = r.penalised;
     s.fallen = r.fallen;
+    s.placed = r.placed;
     m.robots.push_back(s);
   }
   return m;
@@ -139,6 +140,7 @@ SenseFrame from_lcm(const sense_t& m) {
     r.sonar_right = s.sonar_right;
     r.penalised = s.penalised;
     r.fallen = s.fallen;
+    r.placed = s.placed;
     frame.robots.push_back(r);
   }
   return frame;

@@ -89,7 +89,7 @@ SenseFrame Match::sense() {
   const BallTruth ball = world_.ball();
   const std::vector<Viewer> all = viewers();
   size_t i = 0;
-  for (const auto& [id, robot] : on_field_) {
+  for (auto& [id, robot] : on_field_) {
     const Viewer& me = all[i++];
     RobotSense sense;
     sense.id = id;
@@ -103,6 +103,7 @@ SenseFrame Match::sense() {
     sense.sonar_right = sonar.right;
     sense.penalised = referee_ && referee_->penalised(id);
     sense.fallen = fallen(robot);
+    sense.placed = std::exchange(robot.placed, false);
     frame.robots.push_back(std::move(sense));
   }
   return frame;
@@ -127,16 +128,24 @@ ActOutcome Match::apply(const RobotAct& act, int64_t instance, bool accept_late)
   ++member->frames_answered;
   member->behaviour_cpu_us_sum += act.behaviour_cpu_us;
   member->behaviour_cpu_us_max = std::max(member->behaviour_cpu_us_max, act.behaviour_cpu_us);
-  // The belief answers this frame's sense, taken from the world as it still is.
-  const Pose2D truth = world_.robot(robot->second.world_index).body;
-  member->localisation_sq_mm_sum += std::pow(act.localised.x_mm - truth.x_mm, 2) + std::pow(act.localised.y_mm - truth.y_mm, 2);
-  member->localisation_sq_rad_sum += std::pow(normalise_angle(act.localised.theta_rad - truth.theta_rad), 2);
+  record_localisation_error(act, *member);
   for (int i = 0; i < act.motion_ticks && i < kMaxTicksPerFrame; ++i)
     robot->second.pending.push_back({act.left[i], act.right[i]});
   while (robot->second.pending.size() > kMaxPendingTicks) robot->second.pending.pop_front();
   robot->second.head_yaw_rad = act.head_yaw_rad;
   robot->second.head_pitch_rad = act.head_pitch_rad;
   return rejoined ? ActOutcome::kRejoined : ActOutcome::kApplied;
+}
+
+void Match::record_localisation_error(const RobotAct& act, Member& member) const {
+  // The belief answers this frame's sense, taken from the world as it still is. A robot
+  // off the field serving a penalty is left out: where it thinks it is does not matter.
+  if (referee_ && referee_->penalised(act.id)) return;
+  const Pose2D truth = world_.robot(on_field_.at(act.id).world_index).body;
+  ++member.localisation_frames;
+  member.localisation_sq_mm_sum +=
+      std::pow(act.localised.x_mm - truth.x_mm, 2) + std::pow(act.localised.y_mm - truth.y_mm, 2);
+  member.localisation_sq_rad_sum += std::pow(normalise_angle(act.localised.theta_rad - truth.theta_rad), 2);
 }
 
 void Match::time_out(RobotId id) {
@@ -198,6 +207,7 @@ void Match::carry_out(const RefereeDecision& d) {
     if (robot == on_field_.end()) continue;
     world_.place_robot(robot->second.world_index, placement.pose);
     robot->second.pending.clear(); // picked up: what it was doing is over
+    robot->second.placed = true;
   }
   if (d.ball) {
     world_.place_ball(d.ball->x_mm, d.ball->y_mm);

@@ -5,11 +5,11 @@
 namespace touchline::sim {
 
 double Member::localisation_rms_mm() const {
-  return frames_answered ? std::sqrt(localisation_sq_mm_sum / static_cast<double>(frames_answered)) : 0;
+  return localisation_frames ? std::sqrt(localisation_sq_mm_sum / static_cast<double>(localisation_frames)) : 0;
 }
 
 double Member::localisation_rms_rad() const {
-  return frames_answered ? std::sqrt(localisation_sq_rad_sum / static_cast<double>(frames_answered)) : 0;
+  return localisation_frames ? std::sqrt(localisation_sq_rad_sum / static_cast<double>(localisation_frames)) : 0;
 }
 
 std::string describe(RobotId id) {

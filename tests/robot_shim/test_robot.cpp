@@ -81,3 +81,22 @@ TEST(Robot, WalkingRobotReportsFootMotionAndOdometry) {
   EXPECT_NEAR(moved, robot.blackboard().motion.odometry.x, 0.05f * robot.blackboard().motion.odometry.x);
   EXPECT_GE(robot.behaviour_cpu_us(), 0);
 }
+
+TEST(Robot, TeamOneSeesTheFieldFromItsOwnSide) {
+  // +x towards the opponent goal for both teams: the world's frame is team 0's.
+  auto probe_owner = std::make_unique<Probe>();
+  Probe& probe = *probe_owner;
+  robot::LocalisationModeDef perfect;
+  perfect.perfect = true;
+  robot::Robot robot({1, 2}, robot::WalkDef{}, std::move(probe_owner), {}, {}, perfect);
+  RobotSense sense;
+  sense.id = {1, 2};
+  sense.truth = {1000, 300, kPi}; // on team 1's own half, facing the goal it attacks
+  const SenseFrame frame = frame_with(sense, 0);
+  const RobotAct act = robot.step(frame, frame.robots[0]);
+  EXPECT_FLOAT_EQ(probe.seen_pos.x, -1000);
+  EXPECT_FLOAT_EQ(probe.seen_pos.y, -300);
+  EXPECT_NEAR(probe.seen_pos.theta, 0, 1e-6);
+  EXPECT_FLOAT_EQ(act.localised.x_mm, 1000); // the belief goes back to the world in its frame
+  EXPECT_NEAR(std::fabs(act.localised.theta_rad), kPi, 1e-6);
+}

@@ -26,6 +26,9 @@ def test_match_is_summarised_and_every_truth_frame_is_in_the_log(tmp_path):
     assert summary["frames"] == 120 and len(summary["robots"]) == 4
     assert all(r["frames_answered"] == 120 for r in summary["robots"])
     assert "team 1 #2" in result.stdout and "truth hash" in result.stdout
+    assert "Goals: " in result.stdout and "Penalties: " in result.stdout
+    assert {"goals", "penalties", "falls"} <= summary.keys()
+    assert all(r["localisation_rms_mm"] >= 0 for r in summary["robots"])
     logs = list(tmp_path.glob("*_seed1.lcmlog"))
     assert len(logs) == 1
     truth_frames = [e for e in lcm.EventLog(str(logs[0]), "r") if e.channel == "TL_TRUTH"]

@@ -98,6 +98,8 @@ struct RobotSense {
   float sonar_left = 1, sonar_right = 1; ///< nearest obstacle, fraction of the sonar range (1: none)
   bool penalised = false;             ///< off the field, serving a penalty
   bool fallen = false;                ///< lying on the ground (getting up takes time)
+  bool placed = false;                ///< the referee put the robot down since the last frame (robots
+                                      ///< know where the rules place them: localisation restarts there)
 };
 
 /// World -> robots, once per camera frame.

@@ -93,6 +93,7 @@ class Match {
     std::deque<TickMotion> pending; ///< motions not yet stepped, oldest first
     int64_t fallen_until_utime = -1; ///< lying on the ground until then
     bool stopped = false;            ///< lost a ball contest this frame: its feet hold
+    bool placed = false;             ///< put down by the referee since the last sense
   };
   void place(RobotId id);
   bool may_move(RobotId id, const OnField& robot) const;
@@ -100,6 +101,7 @@ class Match {
   void judge();
   void carry_out(const RefereeDecision& decision);
   void fall_after_push(RobotId pusher);
+  void record_localisation_error(const RobotAct& act, Member& member) const;
   std::vector<Viewer> viewers() const;
 
   WorldConfig config_;

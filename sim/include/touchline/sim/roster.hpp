@@ -25,7 +25,8 @@ struct Member {
   int64_t behaviour_cpu_us_sum = 0; ///< over answered frames
   int64_t behaviour_cpu_us_max = 0;
   int64_t behaviour_cpu_us_mean() const { return frames_answered ? behaviour_cpu_us_sum / frames_answered : 0; }
-  double localisation_sq_mm_sum = 0;  ///< squared position error of the robot's belief, over answered frames
+  int64_t localisation_frames = 0;    ///< answered frames on the field (not serving a penalty)
+  double localisation_sq_mm_sum = 0;  ///< squared position error of the robot's belief, over those frames
   double localisation_sq_rad_sum = 0; ///< squared heading error
   double localisation_rms_mm() const;
   double localisation_rms_rad() const;
