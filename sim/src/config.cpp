@@ -153,14 +153,18 @@ void validate(const WorldConfig& config) {
                       str(config.match.ball_start_x_mm) + ", " + str(config.match.ball_start_y_mm) + ")");
 }
 
-WorldConfig load_world_config(const std::string& path, const std::vector<std::string>& overrides) {
-  WorldConfig config;
-  IniSchema schema("world config");
+void bind(IniSchema& schema, WorldConfig& config) {
   bind(schema, config.field);
   bind(schema, config.physics);
   bind(schema, config.match);
   bind(schema, config.perception);
   bind(schema, config.rules);
+}
+
+WorldConfig load_world_config(const std::string& path, const std::vector<std::string>& overrides) {
+  WorldConfig config;
+  IniSchema schema("world config");
+  bind(schema, config);
   if (!path.empty()) schema.read_file(path);
   for (const std::string& assignment : overrides) schema.apply_override(assignment);
   validate(config);

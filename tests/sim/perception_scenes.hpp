@@ -1,4 +1,5 @@
 #pragma once
+#include <vector>
 // Shared set-up for the perception tests: a noiseless, faultless configuration to start
 // from, and viewers on the SPL 2011 field (6000 x 4000; posts at x = +-3000, y = +-700).
 #include "touchline/sim/perception.hpp"
@@ -33,6 +34,13 @@ inline BallTruth ball_at(float x_mm, float y_mm) {
   b.x_mm = x_mm;
   b.y_mm = y_mm;
   return b;
+}
+
+/// The observation of `kind` (and landmark or player `id`) in `seen`, or nullptr.
+inline const Observation* find(const std::vector<Observation>& seen, ObjectKind kind, int id = 0) {
+  for (const Observation& o : seen)
+    if (o.kind == kind && o.id == id) return &o;
+  return nullptr;
 }
 
 } // namespace touchline::sim::testing

@@ -77,11 +77,7 @@ TEST(Config, EveryBoundKeyIsInBothShippedFiles) {
   for (const char* name : {"spl2011.ini", "spl2020.ini"}) {
     WorldConfig config;
     IniSchema schema("all");
-    bind(schema, config.field);
-    bind(schema, config.physics);
-    bind(schema, config.match);
-    bind(schema, config.perception);
-    bind(schema, config.rules);
+    bind(schema, config);
     std::ifstream file(kConfigDir + name);
     ASSERT_TRUE(file) << name;
     const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());

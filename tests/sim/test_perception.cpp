@@ -15,6 +15,7 @@ namespace touchline::sim {
 namespace {
 
 using testing::ball_at;
+using testing::find;
 using testing::exact;
 using testing::kHeadDown;
 using testing::kHeadUp;
@@ -22,11 +23,6 @@ using testing::viewer;
 
 const Field kField; // SPL 2011
 
-const Observation* find(const std::vector<Observation>& seen, ObjectKind kind, int id = 0) {
-  for (const Observation& o : seen)
-    if (o.kind == kind && o.id == id) return &o;
-  return nullptr;
-}
 
 int count(const std::vector<Observation>& seen, ObjectKind kind) {
   int n = 0;

@@ -17,16 +17,12 @@ namespace touchline::sim {
 namespace {
 
 using testing::ball_at;
+using testing::find;
 using testing::exact;
 using testing::viewer;
 
 const Field kField; // SPL 2011
 
-const Observation* find(const std::vector<Observation>& seen, ObjectKind kind, int id = 0) {
-  for (const Observation& o : seen)
-    if (o.kind == kind && o.id == id) return &o;
-  return nullptr;
-}
 
 /// Mean and sample standard deviation.
 struct Moments {

@@ -31,6 +31,8 @@ struct WorldConfig {
 void bind(IniSchema& schema, FieldDef& def);
 void bind(IniSchema& schema, PhysicsDef& def);
 void bind(IniSchema& schema, MatchDef& def);
+/// Every section of a world config.
+void bind(IniSchema& schema, WorldConfig& config);
 
 /// Reads `path` (empty: defaults only), then applies "section.key=value" overrides in
 /// order (later wins), then validates. Throws ConfigError with a one-line message: a
