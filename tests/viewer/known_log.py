@@ -20,8 +20,15 @@ ROBOTS = [
     (1, 1, True, 2500.0, 200.0, math.pi, -10.0, 0.0, 0.3),
     (1, 2, True, 1300.0, -700.0, 2.6, -30.0, -0.4, 0.1),
     (1, 3, True, 700.0, 1300.0, -1.9, -20.0, 0.3, 0.5),
+    (1, 4, True, 2400.0, 2350.0, -math.pi / 2, 0.0, 0.0, 0.3),  # penalised, on the bench
 ]
 SCORE = (2, 1)
+PENALISED = {(1, 4)}  # in every frame
+FALLEN_FROM = {(0, 2): 6}  # lying from this frame on
+SENSE_FRAMES = range(FRAMES - 1)  # the last frame has no TL_SENSE: no sonar to draw
+FALL_US = 6 * FRAME_US + 1000  # during frame 6, after frame 5's truth
+# match_event_t: (utime, kind, team, player, text); the page shows them as (kind name, text)
+EVENTS = [(0, 0, -1, 0, "PLAYING"), (0, 2, 1, 4, "pushing"), (FALL_US, 4, 0, 2, "fell")]
 
 
 def ball_at(k: int) -> tuple:
@@ -33,7 +40,15 @@ def robot_at(spec, k: int) -> dict:
     x, y = x0 + dx * k, y0
     lx, ly = -math.sin(th) * FOOT_OFFSET_MM, math.cos(th) * FOOT_OFFSET_MM
     return {"team": team, "player": player, "active": active, "body": (x, y, th),
+            "penalised": (team, player) in PENALISED, "fallen": k >= FALLEN_FROM.get((team, player), FRAMES),
             "left": (x + lx, y + ly, th), "right": (x - lx, y - ly, th), "head": (yaw, pitch)}
+
+
+def sonar_at(team: int, player: int, k: int) -> tuple:
+    """(left, right) sonar readings in frame k, fractions of the range; 1: nothing ahead."""
+    if (team, player) == (1, 1):
+        return (1.0, round(0.5 - 0.02 * k, 2))  # something closing in on the right
+    return {(0, 1): (0.6, 1.0), (1, 2): (0.25, 0.3)}.get((team, player), (1.0, 1.0))
 
 
 def utime_of(k: int) -> int:
@@ -55,10 +70,31 @@ def _truth(k: int):
     for spec in ROBOTS:
         r, t = robot_at(spec, k), touchline.robot_truth_t()
         t.team, t.player, t.active = r["team"], r["player"], r["active"]
+        t.penalised, t.fallen = r["penalised"], r["fallen"]
         t.body, t.left_foot, t.right_foot = _pose(r["body"]), _pose(r["left"]), _pose(r["right"])
         t.head_yaw_rad, t.head_pitch_rad = r["head"]
         m.robots.append(t)
     m.num_robots = len(m.robots)
+    return m
+
+
+def _sense(k: int):
+    """Frame k's sense, sent at the start of the frame (utime_of(k - 1)), before its truth."""
+    m = touchline.sense_t()
+    m.utime, m.frame = utime_of(k - 1), k
+    m.robots = []
+    for spec in ROBOTS:
+        s = touchline.robot_sense_t()
+        s.team, s.player, s.active = spec[:3]
+        s.sonar_left, s.sonar_right = sonar_at(s.team, s.player, k)
+        m.robots.append(s)
+    m.num_robots = len(m.robots)
+    return m
+
+
+def _event(utime: int, kind: int, team: int, player: int, text: str):
+    m = touchline.match_event_t()
+    m.utime, m.kind, m.team, m.player, m.text = utime, kind, team, player, text
     return m
 
 
@@ -76,14 +112,22 @@ def _status(utime: int, team: int, player: int, state: int):
     return m
 
 
-def write_known_log(path: Path) -> Path:
-    """FRAMES truth frames (one every 1/30 s), game states and statuses, in time order."""
-    log = lcm.EventLog(str(path), "w", overwrite=True)
+def known_messages() -> list:
+    """(utime, channel, message) in the order a match publishes them: FRAMES truth frames (one
+    every 1/30 s), each after its sense, with game states, statuses and events in between."""
     events = [(0, "TL_GAME", _game(0, 600))]
     events += [(0, "TL_STATUS", _status(0, s[0], s[1], 2 if s[2] else 3)) for s in ROBOTS]
-    events += [(utime_of(k), "TL_TRUTH", _truth(k)) for k in range(FRAMES)]
+    events += [(e[0], "TL_EVENT", _event(*e)) for e in EVENTS]
+    for k in range(FRAMES):
+        events += [(utime_of(k - 1), "TL_SENSE", _sense(k))] if k in SENSE_FRAMES else []
+        events.append((utime_of(k), "TL_TRUTH", _truth(k)))
     events.append((utime_of(FRAMES // 2), "TL_GAME", _game(utime_of(FRAMES // 2), 599)))
-    for utime, channel, message in sorted(events, key=lambda e: (e[0], e[1] != "TL_GAME")):
+    return sorted(events, key=lambda e: (e[0], e[1] != "TL_GAME"))
+
+
+def write_known_log(path: Path) -> Path:
+    log = lcm.EventLog(str(path), "w", overwrite=True)
+    for utime, channel, message in known_messages():
         log.write_event(WALL_US + utime, channel, message.encode())
     log.close()
     return path

@@ -1,5 +1,6 @@
-"""The live view: LCM messages decoded and pushed to the page, decimated to ~30 a second;
-a log played into it with lcm-logplayer shows what the replay of that log shows."""
+"""The live view: LCM messages decoded and pushed to the page, decimated to ~30 a second,
+each truth with its own frame's sonar; a log played into it with lcm-logplayer shows what
+the replay of that log shows."""
 import asyncio
 import json
 import subprocess
@@ -9,7 +10,7 @@ from pathlib import Path
 import aiohttp
 
 from conftest import ROOT, viewer_env
-from known_log import FRAMES, _game, _truth
+from known_log import FRAMES, SENSE_FRAMES, known_messages
 from touchline_viewer.field import load_field
 from touchline_viewer.live import LiveSource
 from touchline_viewer.replay_log import ReplayLog
@@ -25,11 +26,13 @@ async def watch_memq(publish_all: bool) -> tuple:
     try:
         async with aiohttp.ClientSession() as session, session.ws_connect(url + "ws") as ws:
             hello = await ws.receive_json(timeout=10)
-            source.lc.publish("TL_GAME", _game(0, 600).encode())
-            for k in range(FRAMES if publish_all else 1):
-                source.lc.publish("TL_TRUTH", _truth(k).encode())
+            last = FRAMES - 1 if publish_all else 0
+            for _, channel, message in known_messages():  # up to the last frame's truth
+                source.lc.publish(channel, message.encode())
+                if channel == "TL_TRUTH" and message.frame == last:
+                    break
             frames = []
-            while not frames or frames[-1]["truth"]["frame"] < (FRAMES - 1 if publish_all else 0):
+            while not frames or frames[-1]["truth"]["frame"] < last:
                 frames.append(await ws.receive_json(timeout=10))
             return hello, frames
     finally:
@@ -40,14 +43,17 @@ def test_published_truth_reaches_the_page_as_the_replay_decodes_it(known_log):
     hello, frames = asyncio.run(watch_memq(publish_all=False))
     assert hello["mode"] == "live" and hello["field"]["length_mm"] == 6000
     replayed = ReplayLog.load(known_log).frame(0)
-    assert frames[-1]["truth"] == replayed["truth"]
-    assert frames[-1]["game"] == replayed["game"]
+    for part in ("truth", "sense", "game", "status", "events"):
+        assert frames[-1][part] == replayed[part], part
+    assert frames[-1]["sense"]["frame"] == 0
 
 
-def test_a_burst_is_decimated_to_the_latest_frame():
+def test_a_burst_is_decimated_to_the_latest_frame(known_log):
     _, frames = asyncio.run(watch_memq(publish_all=True))
     assert len(frames) < FRAMES, "a burst of messages is not forwarded one by one"
     assert frames[-1]["truth"]["frame"] == FRAMES - 1
+    assert FRAMES - 1 not in SENSE_FRAMES and frames[-1]["sense"] is None, "never the previous frame's sonar"
+    assert frames[-1]["events"] == ReplayLog.load(known_log).frame(FRAMES - 1)["events"]
 
 
 def test_a_log_played_with_lcm_logplayer_shows_what_its_replay_shows(known_log):
@@ -61,4 +67,5 @@ def test_a_log_played_with_lcm_logplayer_shows_what_its_replay_shows(known_log):
     for live in frames:
         replayed = replay.frame(live["truth"]["frame"])
         assert live["truth"] == replayed["truth"]
+        assert live["sense"] == replayed["sense"]
         assert live["game"]["secs_remaining"] == replayed["game"]["secs_remaining"]

@@ -1,7 +1,9 @@
 """The page in headless Chromium, replaying the known log: robots and ball drawn where the
-log says (page state and pixels), step, scrub and play, and the README's screenshot."""
+log says (page state and pixels), penalised and fallen badges, sonar bars, match events,
+step, scrub and play, and the README's screenshot."""
 import io
 import json
+import math
 import os
 import shutil
 from pathlib import Path
@@ -10,13 +12,17 @@ import pytest
 from PIL import Image
 
 from conftest import ROOT, VIEWPORT, WAIT_S
-from known_log import FRAMES, ROBOTS, SCORE, ball_at, robot_at, utime_of
+from known_log import EVENTS, FRAMES, ROBOTS, SCORE, SENSE_FRAMES, ball_at, robot_at, sonar_at, utime_of
 from touchline_viewer.field import load_field
 
 FIELD = load_field(ROOT / "config" / "spl2011.ini")
 TEAM_RGB = {0: (0x1E, 0x63, 0xFF), 1: (0xE8, 0x23, 0x2A)}
+PENALISED_RGB = {0: (0x55, 0x77, 0xC5), 1: (0xBA, 0x57, 0x5B)}
 INACTIVE_RGB = (0x8C, 0x8C, 0x8C)
 BALL_RGB = (0xFF, 0x7F, 0x00)
+BADGE_RGB = {"P": (0xFF, 0xD2, 0x1F), "F": (0xFF, 0x4F, 0xD8)}
+SONAR_RGB = (0x00, 0xE5, 0xFF)
+SONAR_RANGE_MM, SONAR_HALF_WIDTH_MM = 1000, 100
 
 
 def drawn(page) -> dict:
@@ -48,6 +54,27 @@ def assert_drawn_at(state: dict, place: dict, pose) -> None:
     assert place["px"] == pytest.approx(px, abs=0.06) and place["py"] == pytest.approx(py, abs=0.06)
 
 
+def ahead_of(body, ahead_mm: float, left_mm: float) -> tuple:
+    """A point in the robot's frame (ahead, + left) in field mm."""
+    x, y, th = body
+    return (x + ahead_mm * math.cos(th) - left_mm * math.sin(th), y + ahead_mm * math.sin(th) + left_mm * math.cos(th))
+
+
+def assert_sonar_drawn(state: dict, got: dict, want: dict, k: int) -> None:
+    if k not in SENSE_FRAMES:
+        assert got["sonar"] is None, "a frame without its own TL_SENSE shows no sonar"
+        return
+    readings = dict(zip(("left", "right"), sonar_at(want["team"], want["player"], k)))
+    assert (got["sonar"]["left"], got["sonar"]["right"]) == (readings["left"], readings["right"])
+    bars = {bar["side"]: bar for bar in got["sonar"]["bars"]}
+    assert set(bars) == {side for side, reading in readings.items() if reading < 1}, "a reading of 1 draws nothing"
+    for side, bar in bars.items():
+        length = readings[side] * SONAR_RANGE_MM
+        assert bar["length_mm"] == pytest.approx(length, abs=0.06)
+        half = SONAR_HALF_WIDTH_MM / 2 if side == "left" else -SONAR_HALF_WIDTH_MM / 2
+        assert_drawn_at(state, bar["end"], ahead_of(want["body"], length, half))
+
+
 def assert_shows_frame(state: dict, k: int) -> None:
     assert (state["frame"], state["utime"]) == (k, utime_of(k))
     assert_drawn_at(state, state["ball"], ball_at(k))
@@ -55,9 +82,16 @@ def assert_shows_frame(state: dict, k: int) -> None:
     assert len(robots) == len(ROBOTS)
     for spec in ROBOTS:
         want, got = robot_at(spec, k), robots[spec[:2]]
-        assert got["active"] == want["active"]
+        assert (got["active"], got["penalised"], got["fallen"]) == (want["active"], want["penalised"], want["fallen"])
+        assert [b["text"] for b in got["badges"]] == ["P"] * want["penalised"] + ["F"] * want["fallen"]
         for part in ("body", "left", "right"):
             assert_drawn_at(state, got[part], want[part])
+        assert_sonar_drawn(state, got, want, k)
+    assert [e["text"] for e in state["events"]] == [e[4] for e in EVENTS if e[0] <= utime_of(k)]
+
+
+def screenshot(page) -> Image.Image:
+    return Image.open(io.BytesIO(page.locator("#field").screenshot())).convert("RGB")
 
 
 def colour_near(image: Image.Image, px: float, py: float, rgb: tuple, tolerance: int = 12) -> bool:
@@ -80,15 +114,42 @@ def test_the_first_frame_is_drawn_where_the_log_says(page, replay_server):
 
 def test_ball_and_feet_pixels_have_their_colours(page, replay_server):
     state = open_viewer(page, replay_server.url)
-    image = Image.open(io.BytesIO(page.locator("#field").screenshot())).convert("RGB")
+    image = screenshot(page)
     assert image.size == (state["canvas"]["width"], state["canvas"]["height"])
     ok, found = colour_near(image, state["ball"]["px"], state["ball"]["py"], BALL_RGB)
     assert ok, f"ball pixel is {found}"
     for robot in state["robots"]:
-        rgb = TEAM_RGB[robot["team"]] if robot["active"] else INACTIVE_RGB
+        rgb = (PENALISED_RGB if robot["penalised"] else TEAM_RGB)[robot["team"]] if robot["active"] else INACTIVE_RGB
         for foot in ("left", "right"):
             ok, found = colour_near(image, robot[foot]["px"], robot[foot]["py"], rgb)
             assert ok, f"team {robot['team']} player {robot['player']} {foot} foot pixel is {found}, not {rgb}"
+
+
+def test_badges_and_sonar_bars_have_their_colours(page, replay_server):
+    open_viewer(page, replay_server.url)
+    k = 7
+    state = page.evaluate(f"window.viewer.seek({utime_of(k) / 1e6})")
+    assert_shows_frame(state, k)
+    image = screenshot(page)
+    robots = {(r["team"], r["player"]): r for r in state["robots"]}
+    for key, text in (((1, 4), "P"), ((0, 2), "F")):
+        [badge] = robots[key]["badges"]
+        assert (badge["text"], badge["colour"].upper()) == (text, "#%02X%02X%02X" % BADGE_RGB[text])
+        ok, found = colour_near(image, badge["px"] - badge["radius_px"] + 2, badge["py"], BADGE_RGB[text])
+        assert ok, f"the {text} badge of {key} is {found} beside its letter"
+    body = robot_at(ROBOTS[0], k)["body"]  # (0, 1): 0.6 on the left, nothing on the right
+    ok, found = colour_near(image, *expected_pixel(state, *ahead_of(body, 450, 50)), SONAR_RGB)
+    assert ok, f"the left sonar bar is {found}"
+    ok, found = colour_near(image, *expected_pixel(state, *ahead_of(body, 450, -50)), SONAR_RGB)
+    assert not ok, "no bar on the right: it reads 1"
+
+
+def test_hud_lists_the_latest_match_events(page, replay_server):
+    open_viewer(page, replay_server.url)
+    events = page.locator("#events li")
+    assert events.all_text_contents() == ["0.0 s STATE_CHANGE: PLAYING", "0.0 s PENALTY Red 4: pushing"]
+    page.evaluate(f"window.viewer.seek({utime_of(6) / 1e6})")
+    assert events.all_text_contents()[-1] == "0.2 s FALL Blue 2: fell"
 
 
 def test_step_buttons_show_the_next_and_previous_frame(page, replay_server):

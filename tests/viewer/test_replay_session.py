@@ -1,10 +1,10 @@
-"""ReplayLog and ReplaySession without a browser: time lookup, the frame's game state and
-statuses, and the play, pause, step, seek and speed commands on a fake clock."""
+"""ReplayLog and ReplaySession without a browser: time lookup, the frame's game state,
+statuses, sonar and match events, and the play, pause, step, seek and speed commands on a fake clock."""
 import asyncio
 
 import pytest
 
-from known_log import FRAMES, ROBOTS, utime_of
+from known_log import EVENTS, FRAMES, ROBOTS, SENSE_FRAMES, sonar_at, utime_of
 from touchline_viewer.replay import ReplaySession
 from touchline_viewer.replay_log import ReplayLog
 
@@ -36,6 +36,24 @@ def test_a_frame_carries_the_game_state_and_statuses_logged_up_to_it(log):
     statuses = log.frame(0)["status"]
     assert [(s["team"], s["player"]) for s in statuses] == [spec[:2] for spec in ROBOTS]
     assert [s["state"] for s in statuses if not s["frames_missed"] == 0] == ["TIMED_OUT"]
+
+
+def test_a_frame_carries_the_sonar_of_its_own_sense_frame(log):
+    for k in range(FRAMES):
+        sense = log.frame(k)["sense"]
+        if k not in SENSE_FRAMES:
+            assert sense is None, "no TL_SENSE for this frame: none, not the previous frame's"
+            continue
+        assert sense["frame"] == k
+        assert [(r["team"], r["player"], tuple(r["sonar"])) for r in sense["robots"]] == \
+            [(spec[0], spec[1], sonar_at(spec[0], spec[1], k)) for spec in ROBOTS]
+
+
+def test_a_frame_carries_the_latest_match_events_up_to_it(log):
+    kinds = {0: "STATE_CHANGE", 2: "PENALTY", 4: "FALL"}
+    assert log.frame(FRAMES - 1)["events"] == [{"utime": u, "kind": kinds[kind], "team": team, "player": player,
+                                                "text": text} for u, kind, team, player, text in EVENTS]
+    assert [e["text"] for e in log.frame(5)["events"]] == ["PLAYING", "pushing"], "the fall comes in frame 6"
 
 
 def test_step_seek_and_speed(log):

@@ -3,6 +3,9 @@
 
 export const TEAM_COLOURS = ["#1e63ff", "#e8232a"]; // team 0 blue, team 1 red
 export const INACTIVE_COLOUR = "#8c8c8c";
+export const PENALISED_COLOURS = ["#5577c5", "#ba575b"]; // the team colours half way to grey
+// Badges by a robot's number: P while penalised (on the bench), F while fallen.
+export const BADGES = { penalised: { text: "P", colour: "#ffd21f" }, fallen: { text: "F", colour: "#ff4fd8" } };
 export const BALL_COLOUR = "#ff7f00";
 const CARPET = "#2e7d32";
 const LINE = "#f4f4f4";
@@ -90,7 +93,8 @@ function drawGoal(ctx, v, f, side) {
 }
 
 export function robotColour(r) {
-  return r.active ? (TEAM_COLOURS[r.team] || INACTIVE_COLOUR) : INACTIVE_COLOUR;
+  if (!r.active) return INACTIVE_COLOUR;
+  return (r.penalised ? PENALISED_COLOURS : TEAM_COLOURS)[r.team] || INACTIVE_COLOUR;
 }
 
 function drawCameraCone(ctx, v, r) {
@@ -145,8 +149,10 @@ function drawHeading(ctx, v, r) {
   ctx.restore();
 }
 
+const labelY = (v, r) => v.py(r.body[1]) - Math.max(16, 170 * v.s);
+
 function drawNumber(ctx, v, r) {
-  const x = v.px(r.body[0]), y = v.py(r.body[1]) - Math.max(16, 170 * v.s);
+  const x = v.px(r.body[0]), y = labelY(v, r);
   ctx.save();
   ctx.font = "bold 13px 'DejaVu Sans', sans-serif";
   ctx.textAlign = "center";
@@ -159,10 +165,70 @@ function drawNumber(ctx, v, r) {
   ctx.restore();
 }
 
-// HOOK (not in the messages yet): sonar and penalised robots. world_truth_t carries neither;
-// when a message does, draw them here: the sonar's cones (thesis Algorithm 2.4) and a
-// penalised robot shown off the field or marked. Nothing is drawn until then.
-function drawRobotExtras(ctx, v, r) { // eslint-disable-line no-unused-vars
+// The sonar (thesis Algorithm 2.4) watches a corridor ahead of the robot, 100 mm either side
+// of its centre line and 1000 mm long; the left half gives sonar_left. A reading is the nearest
+// obstacle as a fraction of the range (1: nothing). Each half with an obstacle is drawn as a
+// bar from the body centre (under the feet) to the obstacle, with a cap across the half there.
+export const SONAR = { rangeMm: 1000, halfWidthMm: 100, colour: "#00e5ff" };
+
+function drawSonar(ctx, v, r, reading) {
+  if (!reading) return null; // no TL_SENSE for this frame or robot
+  const [x, y, th] = r.body, c = Math.cos(th), s = Math.sin(th), w = SONAR.halfWidthMm;
+  const at = (ahead, left) => [x + ahead * c - left * s, y + ahead * s + left * c];
+  const bars = [];
+  ctx.save();
+  ctx.fillStyle = ctx.strokeStyle = SONAR.colour;
+  ctx.lineWidth = 2;
+  for (const [side, value, sign] of [["left", reading[0], 1], ["right", reading[1], -1]]) {
+    if (!(value < 1)) continue;
+    const len = Math.max(0, value) * SONAR.rangeMm;
+    ctx.beginPath();
+    for (const [a, l] of [[0, 0.2], [len, 0.2], [len, 0.8], [0, 0.8]]) {
+      const [px, py] = at(a, sign * l * w);
+      ctx.lineTo(v.px(px), v.py(py));
+    }
+    ctx.fill();
+    line(ctx, v, ...at(len, 0), ...at(len, sign * w));
+    bars.push({ side, length_mm: round1(len), end: pixel(v, at(len, sign * w / 2)) });
+  }
+  ctx.restore();
+  return { left: reading[0], right: reading[1], bars };
+}
+
+function drawFallen(ctx, v, f, r) { // a cross over the body
+  const [x, y] = r.body, d = (f.foot_length_mm / 2 + 30) * v.s;
+  ctx.save();
+  ctx.strokeStyle = "#101010";
+  ctx.lineWidth = 3;
+  ctx.beginPath();
+  ctx.moveTo(v.px(x) - d, v.py(y) - d);
+  ctx.lineTo(v.px(x) + d, v.py(y) + d);
+  ctx.moveTo(v.px(x) - d, v.py(y) + d);
+  ctx.lineTo(v.px(x) + d, v.py(y) - d);
+  ctx.stroke();
+  ctx.restore();
+}
+
+function drawBadges(ctx, v, r) { // right of the number
+  const radius = 8, y = labelY(v, r);
+  return Object.keys(BADGES).filter((k) => r[k]).map((k, i) => {
+    const { text, colour } = BADGES[k], x = v.px(r.body[0]) + 16 + i * (2 * radius + 3);
+    ctx.save();
+    ctx.beginPath();
+    ctx.arc(x, y, radius, 0, 2 * Math.PI);
+    ctx.fillStyle = colour;
+    ctx.fill();
+    ctx.lineWidth = 1;
+    ctx.strokeStyle = "#000";
+    ctx.stroke();
+    ctx.font = "bold 11px 'DejaVu Sans', sans-serif";
+    ctx.textAlign = "center";
+    ctx.textBaseline = "middle";
+    ctx.fillStyle = "#000";
+    ctx.fillText(text, x, y + 0.5);
+    ctx.restore();
+    return { text, colour, px: round1(x), py: round1(y), radius_px: radius };
+  });
 }
 
 function drawBall(ctx, v, f, ball) {
@@ -188,26 +254,33 @@ function clipToCarpet(ctx, v, f) {
 
 const pixel = (v, pose) => ({ x: pose[0], y: pose[1], px: round1(v.px(pose[0])), py: round1(v.py(pose[1])) });
 
-// Draws one truth frame over the field; returns what it drew, in canvas pixels.
-export function drawTruth(ctx, v, f, truth) {
+// Draws one truth frame over the field, with the sonar of the same frame's sense (or null);
+// returns what it drew, in canvas pixels.
+export function drawTruth(ctx, v, f, truth, sense) {
+  const key = (r) => `${r.team}/${r.player}`;
+  const sonars = new Map((sense ? sense.robots : []).map((s) => [key(s), s.sonar]));
   ctx.save();
   clipToCarpet(ctx, v, f); // the boundary walls: no camera sees past them
   const robots = truth.robots.map((r) => ({ r, cone: drawCameraCone(ctx, v, r) }));
   ctx.restore();
+  for (const robot of robots) robot.sonar = drawSonar(ctx, v, robot.r, sonars.get(key(robot.r)));
   for (const { r } of robots) {
     drawFoot(ctx, v, f, r.left, robotColour(r));
     drawFoot(ctx, v, f, r.right, robotColour(r));
     drawHeading(ctx, v, r);
-    drawRobotExtras(ctx, v, r);
+    if (r.fallen) drawFallen(ctx, v, f, r);
   }
-  for (const { r } of robots) drawNumber(ctx, v, r);
+  for (const robot of robots) {
+    drawNumber(ctx, v, robot.r);
+    robot.badges = drawBadges(ctx, v, robot.r);
+  }
   const ballRadius = drawBall(ctx, v, f, truth.ball);
   return {
     ball: { ...pixel(v, truth.ball), radius_px: round1(ballRadius), colour: BALL_COLOUR },
-    robots: robots.map(({ r, cone }) => ({
-      team: r.team, player: r.player, active: r.active, colour: robotColour(r),
-      body: { ...pixel(v, r.body), theta: r.body[2] },
-      left: pixel(v, r.left), right: pixel(v, r.right), camera: cone,
+    robots: robots.map(({ r, cone, sonar, badges }) => ({
+      team: r.team, player: r.player, active: r.active, penalised: r.penalised, fallen: r.fallen,
+      colour: robotColour(r), body: { ...pixel(v, r.body), theta: r.body[2] },
+      left: pixel(v, r.left), right: pixel(v, r.right), camera: cone, sonar, badges,
     })),
   };
 }

@@ -9,7 +9,7 @@ const ctx = canvas.getContext("2d");
 if (new URLSearchParams(location.search).has("export")) document.body.classList.add("export");
 
 let hello = null;   // {mode, source, field, replay?}
-let frame = null;   // the last frame received: {truth, game, status, replay?, ack}
+let frame = null;   // the last frame received: {truth, sense, game, status, events, replay?, ack}
 let socket = null;
 let nextSeq = 1;
 let scrubbing = false;
@@ -63,7 +63,7 @@ function draw() {
   const view = makeView(hello.field, box.width, box.height);
   lastView = view;
   drawField(ctx, view, hello.field);
-  drawn = frame && frame.truth ? drawTruth(ctx, view, hello.field, frame.truth) : null;
+  drawn = frame && frame.truth ? drawTruth(ctx, view, hello.field, frame.truth, frame.sense) : null;
   if (!drawn) {
     ctx.fillStyle = "#fff";
     ctx.font = "16px 'DejaVu Sans', sans-serif";
@@ -88,7 +88,7 @@ function state() {
     ack: frame ? frame.ack : null,
     ball: drawn ? drawn.ball : null,
     robots: drawn ? drawn.robots : [],
-    // HOOK: sonar and penalised robots are not in the messages yet (see draw.js).
+    events: frame ? frame.events || [] : [],
   };
 }
 
@@ -97,8 +97,10 @@ function clock(secs) {
   return `${String(Math.floor(s / 60)).padStart(2, "0")}:${String(s % 60).padStart(2, "0")}`;
 }
 
+const TEAM_NAMES = ["Blue", "Red"];
+
 function showHud() {
-  const { game, truth, replay, status } = frame;
+  const { game, truth, replay, status, events } = frame;
   if (game) {
     $("score0").textContent = game.score[0];
     $("score1").textContent = game.score[1];
@@ -115,9 +117,16 @@ function showHud() {
   $("robots").replaceChildren(...(status || []).map((s) => {
     const li = document.createElement("li");
     li.className = `team${s.team}`;
-    li.textContent = `${s.team ? "Red" : "Blue"} ${s.player}: ${s.state}, ${s.frames_missed} missed, ` +
+    li.textContent = `${TEAM_NAMES[s.team]} ${s.player}: ${s.state}, ${s.frames_missed} missed, ` +
       `behaviour ${s.cpu_mean_us} µs mean`;
     li.title = s.detail;
+    return li;
+  }));
+  $("events").replaceChildren(...(events || []).map((e) => {
+    const li = document.createElement("li");
+    const team = TEAM_NAMES[e.team], who = team ? ` ${team}${e.player ? ` ${e.player}` : ""}` : "";
+    li.className = `team${e.team}`;
+    li.textContent = `${(e.utime / 1e6).toFixed(1)} s ${e.kind}${who}: ${e.text}`;
     return li;
   }));
 }

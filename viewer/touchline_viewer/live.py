@@ -1,10 +1,11 @@
-"""Live view: subscribes to LCM and pushes the latest truth, game state and robot statuses
-to every connected page, at most ~30 times a second."""
+"""Live view: subscribes to LCM and pushes the latest truth (with its frame's sonar), game
+state, robot statuses and match events to every connected page, at most ~30 times a second."""
 import asyncio
+from collections import deque
 
 import lcm
 
-from .decode import CHANNELS, GAME, STATUS, TRUTH, decode
+from .decode import CHANNELS, EVENT, GAME, RECENT_EVENTS, SENSE, STATUS, TRUTH, decode
 from .errors import ViewerError
 
 DEFAULT_LCM_URL = "udpm://239.255.76.67:7667?ttl=0"
@@ -23,8 +24,10 @@ class LiveSource:
             raise ViewerError(f"cannot open LCM at {url}: {e}{hint}") from None
         for channel in CHANNELS:
             self.lc.subscribe(channel, self._on_message)
-        self.truth = self.game = None
+        self.truth = self.sense = self.game = None  # sense: the TL_SENSE of the truth's frame
+        self._latest_sense = None
         self.statuses: dict = {}
+        self.events: deque = deque(maxlen=RECENT_EVENTS)
         self.version = 0  # bumped by every decoded message
         self.clients: set = set()  # async send callables
         self._task = None
@@ -44,8 +47,9 @@ class LiveSource:
         return {"mode": "live", "source": self.url}
 
     def frame(self) -> dict:
-        return {"truth": self.truth, "game": self.game,
-                "status": [self.statuses[k] for k in sorted(self.statuses)], "ack": None}
+        return {"truth": self.truth, "sense": self.sense, "game": self.game,
+                "status": [self.statuses[k] for k in sorted(self.statuses)], "events": list(self.events),
+                "ack": None}
 
     def _on_message(self, channel: str, data: bytes) -> None:
         message = decode(channel, data)  # handlers never throw: a bad message is dropped
@@ -53,6 +57,14 @@ class LiveSource:
             return
         if channel == TRUTH:
             self.truth = message
+            sense = self._latest_sense
+            self.sense = sense if sense and sense["frame"] == message["frame"] else None
+        elif channel == SENSE:  # published just before its frame's truth
+            self._latest_sense = message
+            if self.truth and self.truth["frame"] == message["frame"]:
+                self.sense = message
+        elif channel == EVENT:
+            self.events.append(message)
         elif channel == GAME:
             self.game = message
         elif channel == STATUS:

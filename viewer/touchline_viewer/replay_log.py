@@ -1,11 +1,11 @@
-"""An lcm-logger log loaded for replay: its truth frames, game states and robot statuses,
-indexed by simulated time."""
+"""An lcm-logger log loaded for replay: its truth frames (each with its frame's sonar), game
+states, robot statuses and match events, indexed by simulated time."""
 from bisect import bisect_right
 from pathlib import Path
 
 import lcm
 
-from .decode import GAME, STATUS, TRUTH, decode
+from .decode import EVENT, GAME, RECENT_EVENTS, SENSE, STATUS, TRUTH, decode
 from .errors import ViewerError
 
 LCM_LOG_MAGIC = b"\xed\xa1\xda\x01"  # first bytes of every lcm-logger event
@@ -14,7 +14,7 @@ LCM_LOG_MAGIC = b"\xed\xa1\xda\x01"  # first bytes of every lcm-logger event
 class ReplayLog:
     """Read-only after loading; shared by every replay connection."""
 
-    def __init__(self, name: str, truths: list, games: list, statuses: list):
+    def __init__(self, name: str, truths: list, games: list, statuses: list, senses=(), events=()):
         if not truths:
             raise ViewerError(f"log {name} has no {TRUTH} messages to show")
         self.name = name
@@ -25,6 +25,9 @@ class ReplayLog:
         self.statuses = sorted(statuses, key=lambda m: m["utime"])
         self.status_utimes = [m["utime"] for m in self.statuses]
         self.robot_count = len({(s["team"], s["player"]) for s in self.statuses})
+        self.senses = {s["frame"]: s for s in senses}  # paired with truths by frame
+        self.events = sorted(events, key=lambda m: m["utime"])
+        self.event_utimes = [m["utime"] for m in self.events]
 
     @classmethod
     def load(cls, path: Path) -> "ReplayLog":
@@ -34,7 +37,7 @@ class ReplayLog:
         with open(path, "rb") as f:
             if f.read(4) != LCM_LOG_MAGIC:
                 raise ViewerError(f"log {path} is not an lcm-logger log (empty or corrupt)")
-        found = {TRUTH: [], GAME: [], STATUS: []}
+        found = {TRUTH: [], GAME: [], STATUS: [], SENSE: [], EVENT: []}
         try:
             for event in lcm.EventLog(str(path), "r"):
                 if event.channel in found:
@@ -44,7 +47,7 @@ class ReplayLog:
         except (OSError, ValueError) as e:  # a truncated tail: keep what was read
             if not found[TRUTH]:
                 raise ViewerError(f"log {path} cannot be read: {e}") from None
-        return cls(path.name, found[TRUTH], found[GAME], found[STATUS])
+        return cls(path.name, found[TRUTH], found[GAME], found[STATUS], found[SENSE], found[EVENT])
 
     @property
     def count(self) -> int:
@@ -66,8 +69,9 @@ class ReplayLog:
     def frame(self, i: int) -> dict:
         truth = self.truths[i]
         g = bisect_right(self.game_utimes, truth["utime"]) - 1
-        return {"truth": truth, "game": self.games[g] if g >= 0 else None,
-                "status": self._statuses_at(truth["utime"])}
+        e = bisect_right(self.event_utimes, truth["utime"])
+        return {"truth": truth, "sense": self.senses.get(truth["frame"]), "game": self.games[g] if g >= 0 else None,
+                "status": self._statuses_at(truth["utime"]), "events": self.events[max(0, e - RECENT_EVENTS):e]}
 
     def _statuses_at(self, utime: int) -> list:
         latest = {}
