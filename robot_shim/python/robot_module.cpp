@@ -81,7 +81,17 @@ void define_action_command(py::module_& m) {
       .def_readwrite("head", &AC::All::head)
       .def_readwrite("body", &AC::All::body)
       .def_readwrite("leds", &AC::All::leds)
-      .def_readwrite("sonar", &AC::All::sonar);
+      .def_readwrite("sonar", &AC::All::sonar)
+      .def_property(
+          "teamMessage",
+          [](const AC::All& all) {
+            return py::bytes(reinterpret_cast<const char*>(all.teamMessage.data()), all.teamMessage.size());
+          },
+          [](AC::All& all, const py::bytes& data) {
+            const std::string bytes = data;
+            all.teamMessage.assign(bytes.begin(), bytes.end());
+          },
+          "bytes to send to the teammates this frame (b'': none)");
 }
 
 void define_blackboard(py::module_& m) {

@@ -1,5 +1,6 @@
 #include "touchline/robot/adapters.hpp"
 
+#include <algorithm>
 #include <ctime>
 
 namespace touchline::robot {
@@ -27,6 +28,20 @@ void write_vision(const SenseFrame& frame, const RobotSense& sense, api::Blackbo
 }
 
 void write_fall(const RobotSense& sense, api::Blackboard& blackboard) { blackboard.motion.fallen = sense.fallen; }
+
+void write_receiver(const RobotSense& sense, api::Blackboard& blackboard) {
+  auto& messages = blackboard.receiver.messages;
+  for (const TeamMessageFrame& arrived : sense.messages) {
+    auto it = std::find_if(messages.begin(), messages.end(),
+                           [&](const api::TeamMessage& m) { return m.playerNumber == arrived.player; });
+    if (it == messages.end()) it = messages.insert(messages.end(), api::TeamMessage{arrived.player, 0, {}});
+    if (arrived.sent_utime < it->utime) continue; // an older one overtaken by a newer: keep the newer
+    it->utime = arrived.sent_utime;
+    it->data = arrived.data;
+  }
+  std::sort(messages.begin(), messages.end(),
+            [](const api::TeamMessage& a, const api::TeamMessage& b) { return a.playerNumber < b.playerNumber; });
+}
 
 int64_t thread_cpu_us() {
   timespec ts{};

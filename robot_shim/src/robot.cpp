@@ -41,6 +41,7 @@ RobotAct Robot::step(const SenseFrame& frame, const RobotSense& sense) {
   write_game_controller(frame, sense, blackboard_);
   write_vision(frame, sense, blackboard_);
   write_fall(sense, blackboard_);
+  write_receiver(sense, blackboard_);
   localisation_.tick(frame, sense, blackboard_);
   stats_.ticked_last_step = behaviour_due(frame.frame);
   if (stats_.ticked_last_step) {
@@ -68,6 +69,8 @@ RobotAct Robot::step(const SenseFrame& frame, const RobotSense& sense) {
   act.behaviour_cpu_us = stats_.ticked_last_step ? stats_.last_cpu_us : 0;
   const api::AbsCoord& believed = blackboard_.localisation.robotPos;
   act.localised = to_world_frame({believed.x, believed.y, believed.theta}, id_.team);
+  const auto& message = blackboard_.behaviour.request.teamMessage;
+  if (stats_.ticked_last_step && message.size() <= kMaxTeamMessageBytes) act.team_message = message;
   return act;
 }
 

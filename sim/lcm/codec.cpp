@@ -93,6 +93,15 @@ sense_t to_lcm(const SenseFrame& frame) {
     s.penalised = r.penalised;
     s.fallen = r.fallen;
     s.placed = r.placed;
+    s.num_messages = static_cast<int16_t>(r.messages.size());
+    for (const TeamMessageFrame& message : r.messages) {
+      team_message_t out;
+      out.player = static_cast<int8_t>(message.player);
+      out.sent_utime = message.sent_utime;
+      out.size = static_cast<int16_t>(message.data.size());
+      out.data = message.data;
+      s.messages.push_back(out);
+    }
     m.robots.push_back(s);
   }
   return m;
@@ -141,6 +150,11 @@ SenseFrame from_lcm(const sense_t& m) {
     r.penalised = s.penalised;
     r.fallen = s.fallen;
     r.placed = s.placed;
+    for (const team_message_t& message : s.messages) {
+      if (message.player < 1 || message.player > kMaxTeamSize)
+        throw MalformedMessage(what + ": team message from player " + std::to_string(message.player));
+      r.messages.push_back({message.player, message.sent_utime, message.data});
+    }
     frame.robots.push_back(r);
   }
   return frame;
@@ -165,6 +179,8 @@ act_t to_lcm(const RobotAct& act, int64_t utime, int64_t instance) {
   m.odometry = to_lcm(act.odometry);
   m.behaviour_cpu_us = static_cast<int32_t>(act.behaviour_cpu_us);
   m.localised = to_lcm(act.localised);
+  m.team_message_size = static_cast<int16_t>(act.team_message.size());
+  m.team_message = act.team_message;
   return m;
 }
 
@@ -191,6 +207,7 @@ RobotAct from_lcm(const act_t& m) {
   act.odometry = from_lcm(m.odometry, "odometry", what);
   act.behaviour_cpu_us = m.behaviour_cpu_us;
   act.localised = from_lcm(m.localised, "localised", what);
+  act.team_message = m.team_message;
   return act;
 }
 

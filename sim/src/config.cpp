@@ -147,6 +147,7 @@ void validate(const WorldConfig& config) {
   validate_match(config.match);
   validate(config.perception);
   validate(config.rules);
+  validate(config.comm);
   const Field field(config.field);
   if (!field.on_carpet(config.match.ball_start_x_mm, config.match.ball_start_y_mm))
     throw ConfigError("match.ball_start_x_mm/_y_mm must be on the carpet (got " +
@@ -159,6 +160,7 @@ void bind(IniSchema& schema, WorldConfig& config) {
   bind(schema, config.match);
   bind(schema, config.perception);
   bind(schema, config.rules);
+  bind(schema, config.comm);
 }
 
 WorldConfig load_world_config(const std::string& path, const std::vector<std::string>& overrides) {

@@ -31,8 +31,10 @@ const char* state_name(GameState state) {
 /// libraries, and a seed must give the same match everywhere.
 double uniform01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
 
-/// The camera's stream is seeded apart from the falls', so one never shifts the other.
+/// The camera's and the radio's streams are seeded apart from the falls', so one never
+/// shifts another.
 constexpr uint64_t kPerceptionSeedSalt = 0x9e3779b97f4a7c15ull;
+constexpr uint64_t kCommSeedSalt = 0xc2b2ae3d27d4eb4full;
 
 } // namespace
 
@@ -41,7 +43,8 @@ Match::Match(const WorldConfig& config, uint64_t seed)
       rng_(seed),
       world_(config.field, config.physics, config.match.foot_separation_mm),
       roster_(config.match.team_size),
-      perception_(Field(config.field), config.perception, seed ^ kPerceptionSeedSalt) {
+      perception_(Field(config.field), config.perception, seed ^ kPerceptionSeedSalt),
+      comm_(config.comm, seed ^ kCommSeedSalt) {
   if (config.rules.referee)
     referee_.emplace(Field(config.field), config.rules, config.match.team_size, config.physics.ball_diameter_mm);
 }
@@ -104,6 +107,7 @@ SenseFrame Match::sense() {
     sense.penalised = referee_ && referee_->penalised(id);
     sense.fallen = fallen(robot);
     sense.placed = std::exchange(robot.placed, false);
+    sense.messages = comm_.receive(id, frame.utime);
     frame.robots.push_back(std::move(sense));
   }
   return frame;
@@ -129,6 +133,11 @@ ActOutcome Match::apply(const RobotAct& act, int64_t instance, bool accept_late)
   member->behaviour_cpu_us_sum += act.behaviour_cpu_us;
   member->behaviour_cpu_us_max = std::max(member->behaviour_cpu_us_max, act.behaviour_cpu_us);
   record_localisation_error(act, *member);
+  if (!act.team_message.empty()) {
+    std::vector<RobotId> team;
+    for (const auto& [id, other] : on_field_) team.push_back(id);
+    comm_.send(act.id, frame_start_utime(act.frame), act.team_message, team);
+  }
   for (int i = 0; i < act.motion_ticks && i < kMaxTicksPerFrame; ++i)
     robot->second.pending.push_back({act.left[i], act.right[i]});
   while (robot->second.pending.size() > kMaxPendingTicks) robot->second.pending.pop_front();

@@ -151,6 +151,7 @@ def test_malformed_messages_are_reported_and_ignored(tmp_path):
     bus.publish("TL_ACT_0_1", b"\x00garbage")
     bad = act_t()
     bad.team, bad.player, bad.motion_ticks = 0, 9, 0
+    bad.team_message = b""  # lcm-gen 1.3.1's Python default for byte arrays is a str
     bus.publish("TL_ACT_0_9", bad.encode())
     match.world.wait_for_line("cannot decode as act_t")
     match.world.wait_for_line("no such robot (team 0, player 9)")

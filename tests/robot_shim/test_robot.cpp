@@ -100,3 +100,19 @@ TEST(Robot, TeamOneSeesTheFieldFromItsOwnSide) {
   EXPECT_FLOAT_EQ(act.localised.x_mm, 1000); // the belief goes back to the world in its frame
   EXPECT_NEAR(std::fabs(act.localised.theta_rad), kPi, 1e-6);
 }
+
+TEST(Robot, ReceiverKeepsTheLatestMessageOfEachTeammate) {
+  robot::Robot robot({0, 1}, robot::WalkDef{}, std::make_unique<Probe>());
+  RobotSense sense;
+  sense.id = {0, 1};
+  sense.messages = {{3, 100, {7}}, {2, 50, {5}}, {3, 200, {8}}};
+  robot.step(frame_with(sense, 0), sense);
+  sense.messages = {{2, 40, {4}}}; // older than what we have from player 2: ignored
+  robot.step(frame_with(sense, 1), sense);
+  const auto& messages = robot.blackboard().receiver.messages;
+  ASSERT_EQ(messages.size(), 2u);
+  EXPECT_EQ(messages[0].playerNumber, 2);
+  EXPECT_EQ(messages[0].data, std::vector<uint8_t>{5});
+  EXPECT_EQ(messages[1].playerNumber, 3);
+  EXPECT_EQ(messages[1].data, std::vector<uint8_t>{8});
+}

@@ -222,3 +222,24 @@ TEST(Match, LocalisationErrorOfTheRobotsBeliefIsMeasuredAgainstTruth) {
   EXPECT_NEAR(member->localisation_rms_mm(), 50, 1e-3);
   EXPECT_NEAR(member->localisation_rms_rad(), 0.1, 1e-6);
 }
+
+TEST(Match, TeamMessagesReachTeammatesThroughTheRadio) {
+  sim::WorldConfig config = small_config();
+  config.comm.loss_probability = 0;
+  sim::Match match(config);
+  match.join({0, 1}, 1, 0);
+  match.join({0, 2}, 2, 0);
+  match.start();
+  RobotAct act = forward_act({0, 1}, match.frame(), ticks_in_frame(match.frame()), 0.f);
+  act.team_message = {1, 2, 3};
+  match.apply(act, 1);
+  match.advance();
+  std::vector<TeamMessageFrame> got;
+  for (int f = 0; f < 6 && got.empty(); ++f) { // 100 ms of latency: 3 frames
+    got = match.sense().robots[1].messages;
+    match.advance();
+  }
+  ASSERT_EQ(got.size(), 1u);
+  EXPECT_EQ(got[0].player, 1);
+  EXPECT_EQ(got[0].data, (std::vector<uint8_t>{1, 2, 3}));
+}

@@ -21,6 +21,10 @@ void write_vision(const SenseFrame& frame, const RobotSense& sense, api::Blackbo
 /// Reads: whether the robot lies on the ground. Writes: blackboard.motion.fallen.
 void write_fall(const RobotSense& sense, api::Blackboard& blackboard);
 
+/// Reads: teammates' messages arriving this frame. Writes: blackboard.receiver (the
+/// latest message from each teammate, by player number).
+void write_receiver(const RobotSense& sense, api::Blackboard& blackboard);
+
 /// A CPU clock in microseconds.
 using CpuClock = std::function<int64_t()>;
 

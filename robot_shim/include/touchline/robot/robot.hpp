@@ -26,6 +26,10 @@ struct BehaviourTimingDef {
   CpuClock cpu_clock = thread_cpu_us;
 };
 
+/// The transport's bound on one team message; the league's (config [comm], default 128
+/// bytes) is enforced by the world, which refuses what exceeds it.
+constexpr size_t kMaxTeamMessageBytes = 4096;
+
 /// Where the robot's beliefs about its pose and the ball come from.
 struct LocalisationModeDef {
   localisation::LocalisationDef filters; ///< the field the robot knows, the filters' noise models

@@ -79,6 +79,13 @@ struct Observation {
   float image_x = 0;      ///< Algorithm 2.3's image coordinate, 0..1 across the view
 };
 
+/// A team message on its way: who sent it, when, and its bytes.
+struct TeamMessageFrame {
+  int player = 0;          ///< the sender's player number (same team as the recipient)
+  int64_t sent_utime = 0;  ///< simulated time it was sent, microseconds
+  std::vector<uint8_t> data;
+};
+
 /// The referee's view of the game, as the GameController sends it.
 struct GameInfo {
   GameState state = GameState::kPlaying;
@@ -98,6 +105,7 @@ struct RobotSense {
   float sonar_left = 1, sonar_right = 1; ///< nearest obstacle, fraction of the sonar range (1: none)
   bool penalised = false;             ///< off the field, serving a penalty
   bool fallen = false;                ///< lying on the ground (getting up takes time)
+  std::vector<TeamMessageFrame> messages; ///< teammates' messages arriving this frame
   bool placed = false;                ///< the referee put the robot down since the last frame (robots
                                       ///< know where the rules place them: localisation restarts there)
 };
@@ -131,6 +139,7 @@ struct RobotAct {
   Pose2D odometry;          ///< the walk's dead-reckoned body pose (odometry frame)
   int64_t behaviour_cpu_us = 0; ///< CPU time of this frame's behaviour tick (thread CPU clock)
   Pose2D localised;             ///< where the robot believes it is (field frame)
+  std::vector<uint8_t> team_message; ///< to the teammates (empty: none this frame)
 };
 
 } // namespace touchline

@@ -1,5 +1,5 @@
 #pragma once
-// A world config file: [field], [physics], [match], [camera], [noise], [sonar] and [rules] sections (config/spl2011.ini,
+// A world config file: [field], [physics], [match], [camera], [noise], [sonar], [rules] and [comm] sections (config/spl2011.ini,
 // config/spl2020.ini). Every key is optional; its default is the definition struct's.
 #include <string>
 #include <vector>
@@ -8,6 +8,7 @@
 #include "touchline/sim/field.hpp"
 #include "touchline/sim/perception_config.hpp"
 #include "touchline/sim/rules.hpp"
+#include "touchline/sim/team_comm.hpp"
 #include "touchline/sim/world.hpp"
 
 namespace touchline::sim {
@@ -26,6 +27,7 @@ struct WorldConfig {
   MatchDef match;
   PerceptionDef perception;
   RulesDef rules;
+  CommDef comm;
 };
 
 void bind(IniSchema& schema, FieldDef& def);

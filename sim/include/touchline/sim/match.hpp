@@ -80,6 +80,7 @@ class Match {
   bool finished() const;
   int64_t frame() const { return frame_; }
   const std::optional<Referee>& referee() const { return referee_; }
+  const TeamComm& comm() const { return comm_; }
   int64_t utime() const { return frame_start_utime(frame_); }
   const Roster& roster() const { return roster_; }
   const World& world() const { return world_; }
@@ -109,6 +110,7 @@ class Match {
   World world_;
   Roster roster_;
   Perception perception_;
+  TeamComm comm_;
   std::optional<Referee> referee_;
   std::vector<MatchEvent> events_;
   std::map<RobotId, OnField> on_field_;

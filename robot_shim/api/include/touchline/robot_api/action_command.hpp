@@ -2,6 +2,7 @@
 // ActionCommand: what a behaviour requests, shaped like the robot's own. Units: walk
 // velocities in mm/s and rad/s, head angles in rad.
 #include <cstdint>
+#include <vector>
 
 namespace touchline::api::ActionCommand {
 
@@ -60,6 +61,9 @@ struct All {
   Body body;
   LED leds;
   float sonar = 0; ///< sonar mode request (unused by the simulator)
+  /// Bytes to send to the teammates this frame (empty: none). The league bounds size and
+  /// rate (config [comm]); what exceeds them is not sent.
+  std::vector<uint8_t> teamMessage;
 };
 
 inline Body walk(float forward, float left, float turn) {

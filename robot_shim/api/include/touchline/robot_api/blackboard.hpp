@@ -53,10 +53,11 @@ struct GameControllerBlackboard {
 /// A teammate's last message, written by the receiver adapter.
 struct TeamMessage {
   int playerNumber = 0;
-  int64_t utime = 0;
+  int64_t utime = 0;          ///< simulated time it was sent, microseconds
   std::vector<uint8_t> data;
 };
 
+/// The latest message from each teammate that got through, by player number.
 struct ReceiverBlackboard {
   std::vector<TeamMessage> messages;
 };

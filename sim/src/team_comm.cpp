@@ -1,0 +1,65 @@
+#include "touchline/sim/team_comm.hpp"
+
+#include <cmath>
+#include <string>
+
+namespace touchline::sim {
+
+void bind(IniSchema& s, CommDef& d) {
+  s.bind("comm.max_bytes", &d.max_bytes, "longest team message, bytes")
+      .bind("comm.max_rate_hz", &d.max_rate_hz, "messages per second per robot")
+      .bind("comm.latency_ms", &d.latency_ms, "from sending to arriving, ms")
+      .bind("comm.loss_probability", &d.loss_probability, "each delivery is lost with this chance, 0..1");
+}
+
+void validate(const CommDef& d) {
+  if (d.max_bytes < 0) throw ConfigError("comm.max_bytes must be >= 0 (got " + std::to_string(d.max_bytes) + ")");
+  if (!(d.max_rate_hz > 0)) throw ConfigError("comm.max_rate_hz must be > 0 (got " + std::to_string(d.max_rate_hz) + ")");
+  if (!(d.latency_ms >= 0)) throw ConfigError("comm.latency_ms must be >= 0 (got " + std::to_string(d.latency_ms) + ")");
+  if (!(d.loss_probability >= 0 && d.loss_probability <= 1))
+    throw ConfigError("comm.loss_probability must be 0..1 (got " + std::to_string(d.loss_probability) + ")");
+}
+
+TeamComm::TeamComm(const CommDef& def, uint64_t seed) : def_(def), rng_(seed) {}
+
+SendResult TeamComm::send(RobotId from, int64_t utime, const std::vector<uint8_t>& data,
+                          const std::vector<RobotId>& team) {
+  if (static_cast<int64_t>(data.size()) > def_.max_bytes) {
+    ++refused_;
+    return SendResult::kTooLong;
+  }
+  const auto min_gap_us = static_cast<int64_t>(std::llround(1e6 / static_cast<double>(def_.max_rate_hz)));
+  const auto last = last_sent_utime_.find(from);
+  if (last != last_sent_utime_.end() && utime - last->second < min_gap_us) {
+    ++refused_;
+    return SendResult::kTooSoon;
+  }
+  last_sent_utime_[from] = utime;
+  ++sent_;
+  const int64_t arrives = utime + static_cast<int64_t>(std::llround(def_.latency_ms * 1000.0));
+  for (RobotId to : team) {
+    if (to == from || to.team != from.team) continue;
+    // Uniform from the raw bits: std:: distributions differ between standard libraries.
+    const double draw = static_cast<double>(rng_() >> 11) * 0x1.0p-53;
+    if (draw < def_.loss_probability) {
+      ++lost_;
+      continue;
+    }
+    in_flight_[to].push_back({arrives, {from.player, utime, data}});
+  }
+  return SendResult::kSent;
+}
+
+std::vector<TeamMessageFrame> TeamComm::receive(RobotId to, int64_t utime) {
+  std::vector<TeamMessageFrame> arrived;
+  auto queue = in_flight_.find(to);
+  if (queue == in_flight_.end()) return arrived;
+  while (!queue->second.empty() && queue->second.front().arrives_utime <= utime) {
+    arrived.push_back(std::move(queue->second.front().message));
+    queue->second.pop_front();
+    ++delivered_;
+  }
+  return arrived;
+}
+
+} // namespace touchline::sim
