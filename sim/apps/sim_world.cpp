@@ -24,6 +24,19 @@ transport::Pacing parse_mode(const std::string& mode) {
   throw po::error("--mode must be lockstep, realtime or free (got '" + mode + "')");
 }
 
+transport::GameControllerReceiverOptions parse_gamecontroller(const std::string& text) {
+  transport::GameControllerReceiverOptions options;
+  const auto colon = text.rfind(':');
+  const std::string port = colon == std::string::npos ? text : text.substr(colon + 1);
+  if (colon != std::string::npos) options.address = text.substr(0, colon);
+  char* end = nullptr;
+  const long value = std::strtol(port.c_str(), &end, 10);
+  if (port.empty() || *end != '\0' || value < 1 || value > 65535)
+    throw po::error("--gamecontroller must be [ADDRESS:]PORT with a port 1..65535 (got '" + text + "')");
+  options.port = static_cast<uint16_t>(value);
+  return options;
+}
+
 void write_summary_json(const std::string& path, const sim::Match& match, const transport::RunSummary& s,
                         uint64_t seed) {
   std::ofstream out(path);
@@ -82,6 +95,7 @@ int main(int argc, char** argv) {
   uint64_t seed = 1;
   double duration_s = -1;
   int robots = -1;
+  std::string gamecontroller;
 
   po::options_description options(
       "sim_world: plays a match in the Box2D world with robot_shim processes over LCM.\n"
@@ -99,6 +113,8 @@ int main(int argc, char** argv) {
     ("seed", po::value(&seed)->default_value(seed), "random seed: the camera noise, false negatives and falls all draw from it")
     ("lcm-url", po::value(&node.lcm_url)->default_value(node.lcm_url), "LCM provider URL")
     ("summary", po::value(&node.summary_path), "write a JSON summary of the match to this path")
+    ("gamecontroller", po::value(&gamecontroller),
+     "take the game from the official SPL GameController's UDP packets (versions 15 and 18) on [ADDRESS:]PORT, e.g. 127.0.0.1:3838, instead of the built-in referee")
     ("log", po::value(&node.log_path), "record every message of the match to this LCM event log (lcm-logger format; timestamps are simulated time)")
     ("quiet", "no progress lines");
 
@@ -117,6 +133,10 @@ int main(int argc, char** argv) {
     node.progress = !vm.count("quiet");
     if (duration_s > 0) overrides.push_back("match.duration_s=" + std::to_string(duration_s));
     else if (vm.count("duration")) throw po::error("--duration must be > 0");
+    if (!gamecontroller.empty()) {
+      node.gamecontroller = parse_gamecontroller(gamecontroller);
+      overrides.push_back("rules.referee=false"); // the GameController referees instead
+    }
     config = sim::load_world_config(config_path, overrides);
     node.robots = robots >= 0 ? robots : 2 * config.match.team_size;
     if (node.robots < 1 || node.robots > 2 * config.match.team_size)

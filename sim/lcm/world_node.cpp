@@ -83,7 +83,16 @@ class WorldNode {
 
   RunSummary run() {
     wait_for_joins();
+    if (def_.gamecontroller) {
+      gamecontroller_.emplace(*def_.gamecontroller);
+      GameInfo waiting; // robots stand in INITIAL until the GameController says otherwise
+      waiting.state = GameState::kInitial;
+      match_.set_external_game(waiting, {});
+      log_ << "sim_world: taking the game from GameController packets on " << def_.gamecontroller->address << ":"
+           << gamecontroller_->port() << "\n" << std::flush;
+    }
     match_.start();
+    publish_game_state(false); // the tools and robots learn the state at once
     log_ << "sim_world: kick-off with " << match_.active_robots().size() << " robots\n" << std::flush;
     const int64_t start_us = wall_us();
     while (!match_.finished() && !g_stop) {
@@ -112,7 +121,25 @@ class WorldNode {
     }
   }
 
+  /// The latest GameController packet, if one came since the last frame.
+  void poll_gamecontroller() {
+    if (!gamecontroller_) return;
+    const auto packet = gamecontroller_->poll();
+    if (!packet) return;
+    std::set<RobotId> penalised;
+    for (int team = 0; team < 2; ++team)
+      for (int player = 1; player <= kMaxTeamSize; ++player)
+        if (packet->penalties[static_cast<size_t>(team)][static_cast<size_t>(player - 1)].penalised)
+          penalised.insert({team, player});
+    if (match_.game().state != packet->game.state || !gamecontroller_seen_)
+      log_ << "sim_world: GameController says " << kStateNames[static_cast<int>(packet->game.state)]
+           << " (packet " << packet->packet_number << ")\n" << std::flush;
+    gamecontroller_seen_ = true;
+    match_.set_external_game(packet->game, penalised);
+  }
+
   void run_frame(int64_t start_us) {
+    poll_gamecontroller();
     publish(kSenseChannel, to_lcm(match_.sense()));
     if (def_.pacing != Pacing::kFree) wait_for_answers();
     if (def_.pacing != Pacing::kLockstep) pace(start_us);
@@ -291,6 +318,7 @@ class WorldNode {
   }
 
   static constexpr int kFramesPerSecond = 30;
+  static constexpr const char* kStateNames[] = {"INITIAL", "READY", "SET", "PLAYING", "FINISHED"};
   static constexpr int64_t kMaxMalformedReports = 20;
 
   sim::Match& match_;
@@ -299,6 +327,8 @@ class WorldNode {
   ::lcm::LCM lcm_;
   sim::FrameBarrier barrier_;
   std::unique_ptr<MatchRecorder> recorder_;
+  std::optional<GameControllerReceiver> gamecontroller_;
+  bool gamecontroller_seen_ = false;
   Fnv1a truth_hash_;
   RunSummary summary_;
   std::set<int64_t> joined_, rejected_, unknown_;

@@ -68,7 +68,18 @@ void Match::start() {
   judge(); // the referee starts its clock (INITIAL)
 }
 
+void Match::set_external_game(const GameInfo& game, const std::set<RobotId>& penalised) {
+  external_game_ = game;
+  external_penalised_ = penalised;
+}
+
+bool Match::penalised(RobotId id) const {
+  if (external_game_) return external_penalised_.count(id) != 0;
+  return referee_ && referee_->penalised(id);
+}
+
 GameInfo Match::game() const {
+  if (external_game_) return *external_game_;
   if (referee_) return referee_->info();
   GameInfo info; // no referee: PLAYING until the duration runs out
   const double left_s = config_.match.duration_s - static_cast<double>(utime()) * 1e-6;
@@ -104,7 +115,7 @@ SenseFrame Match::sense() {
     const SonarReading sonar = perception_.sonar(me, all);
     sense.sonar_left = sonar.left;
     sense.sonar_right = sonar.right;
-    sense.penalised = referee_ && referee_->penalised(id);
+    sense.penalised = penalised(id);
     sense.fallen = fallen(robot);
     sense.placed = std::exchange(robot.placed, false);
     sense.messages = comm_.receive(id, frame.utime);
@@ -149,7 +160,7 @@ ActOutcome Match::apply(const RobotAct& act, int64_t instance, bool accept_late)
 void Match::record_localisation_error(const RobotAct& act, Member& member) const {
   // The belief answers this frame's sense, taken from the world as it still is. A robot
   // off the field serving a penalty is left out: where it thinks it is does not matter.
-  if (referee_ && referee_->penalised(act.id)) return;
+  if (penalised(act.id)) return;
   const Pose2D truth = world_.robot(on_field_.at(act.id).world_index).body;
   ++member.localisation_frames;
   member.localisation_sq_mm_sum +=
@@ -166,7 +177,10 @@ void Match::time_out(RobotId id) {
 }
 
 bool Match::may_move(RobotId id, const OnField& robot) const {
-  return !fallen(robot) && !robot.stopped && (!referee_ || referee_->may_move(id));
+  if (fallen(robot) || robot.stopped) return false;
+  if (external_game_)
+    return !penalised(id) && (external_game_->state == GameState::kReady || external_game_->state == GameState::kPlaying);
+  return !referee_ || referee_->may_move(id);
 }
 
 void Match::advance() {
@@ -257,7 +271,7 @@ TruthFrame Match::truth() const {
     TruthFrame::Robot r;
     r.truth = world_.robot(robot.world_index);
     r.active = roster_.find(id)->active;
-    r.penalised = referee_ && referee_->penalised(id);
+    r.penalised = penalised(id);
     r.fallen = fallen(robot);
     r.head_yaw_rad = robot.head_yaw_rad;
     r.head_pitch_rad = robot.head_pitch_rad;
@@ -267,7 +281,7 @@ TruthFrame Match::truth() const {
 }
 
 bool Match::finished() const {
-  if (referee_ && referee_->state() == GameState::kFinished) return true;
+  if (game().state == GameState::kFinished) return true;
   return static_cast<double>(utime()) >= static_cast<double>(config_.match.duration_s) * 1e6;
 }
 

@@ -9,6 +9,7 @@
 #include <map>
 #include <optional>
 #include <random>
+#include <set>
 #include <vector>
 
 #include "touchline/frame.hpp"
@@ -72,6 +73,10 @@ class Match {
   /// stand: penalised, fallen, or the game in INITIAL/SET/FINISHED), lets the referee
   /// judge, carries out its decisions; the next frame begins.
   void advance();
+  /// The game from an external GameController instead of the built-in referee (configure
+  /// rules.referee = false): from now on game() is `game`, and robots in `penalised`, or
+  /// any robot outside READY and PLAYING, stand still where they are.
+  void set_external_game(const GameInfo& game, const std::set<RobotId>& penalised);
   /// Events since the last call, oldest first.
   std::vector<MatchEvent> take_events();
   GameInfo game() const;
@@ -99,6 +104,7 @@ class Match {
   void place(RobotId id);
   bool may_move(RobotId id, const OnField& robot) const;
   bool fallen(const OnField& robot) const { return robot.fallen_until_utime > utime(); }
+  bool penalised(RobotId id) const;
   void judge();
   void carry_out(const RefereeDecision& decision);
   void fall_after_push(RobotId pusher);
@@ -112,6 +118,8 @@ class Match {
   Perception perception_;
   TeamComm comm_;
   std::optional<Referee> referee_;
+  std::optional<GameInfo> external_game_;   ///< from the GameController, when it decides
+  std::set<RobotId> external_penalised_;
   std::vector<MatchEvent> events_;
   std::map<RobotId, OnField> on_field_;
   int64_t frame_ = 0;

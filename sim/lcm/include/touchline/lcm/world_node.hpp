@@ -5,9 +5,11 @@
 // world truth, game state and robot status.
 #include <cstdint>
 #include <iosfwd>
+#include <optional>
 #include <string>
 
 #include "touchline/lcm/codec.hpp"
+#include "touchline/lcm/gamecontroller_receiver.hpp"
 #include "touchline/sim/match.hpp"
 
 namespace touchline::transport {
@@ -27,6 +29,9 @@ struct WorldNodeDef {
   double join_timeout_s = 30;    ///< wall time to wait for them
   std::string summary_path;      ///< write a JSON summary here at the end (empty: none)
   std::string log_path;          ///< record every message to this LCM event log (empty: none)
+  /// Take the game from the official GameController's UDP packets instead of the built-in
+  /// referee (which the config must switch off: rules.referee = false).
+  std::optional<GameControllerReceiverOptions> gamecontroller;
   bool progress = true;          ///< print a line per simulated 10 s
 };
 
