@@ -243,3 +243,49 @@ TEST(Match, TeamMessagesReachTeammatesThroughTheRadio) {
   EXPECT_EQ(got[0].player, 1);
   EXPECT_EQ(got[0].data, (std::vector<uint8_t>{1, 2, 3}));
 }
+
+TEST(Match, PushingIsPenalisedAndThePushedRobotFallsThenGetsUp) {
+  sim::WorldConfig config;
+  config.match.team_size = 1;
+  config.rules.initial_s = config.rules.ready_s = config.rules.set_s = 0; // straight to PLAYING
+  config.rules.manual_placement = false;
+  config.rules.fall_probability = 1;
+  config.rules.getup_s = 2;
+  config.match.ball_start_x_mm = 2500; // far from both: not contesting it
+  sim::Match match(config);
+  match.join({0, 1}, 1, 0);
+  match.join({1, 1}, 2, 0);
+  match.start();
+  match.advance();
+  ASSERT_EQ(match.game().state, GameState::kPlaying);
+  // Team 1's robot walks into the back of team 0's, both facing +x.
+  match.world().place_robot(0, {0, 0, 0});
+  match.world().place_robot(1, {-250, 0, 0});
+  match.take_events();
+  match.advance();
+  const auto events = match.take_events();
+  const auto penalty = std::find_if(events.begin(), events.end(),
+                                    [](const sim::MatchEvent& e) { return e.kind == sim::MatchEvent::Kind::kPenalty; });
+  ASSERT_NE(penalty, events.end());
+  EXPECT_EQ(penalty->robot, (RobotId{1, 1}));
+  EXPECT_EQ(penalty->text, "pushing");
+  const auto fall = std::find_if(events.begin(), events.end(),
+                                 [](const sim::MatchEvent& e) { return e.kind == sim::MatchEvent::Kind::kFall; });
+  ASSERT_NE(fall, events.end());
+  EXPECT_EQ(fall->robot, (RobotId{0, 1}));
+
+  SenseFrame sense = match.sense();
+  EXPECT_TRUE(sense.find({0, 1})->fallen);
+  EXPECT_TRUE(sense.find({1, 1})->penalised);
+  const Pose2D lying = match.truth().robots[0].truth.body;
+  for (int f = 0; f < 30; ++f) { // it asks to walk but lies still
+    match.apply(forward_act({0, 1}, match.frame(), ticks_in_frame(match.frame()), 5.f), 1);
+    match.advance();
+  }
+  EXPECT_FLOAT_EQ(match.truth().robots[0].truth.body.x_mm, lying.x_mm);
+  for (int f = 0; f < 40; ++f) match.advance(); // 2 s of get-up time are over
+  EXPECT_FALSE(match.sense().find({0, 1})->fallen);
+  match.apply(forward_act({0, 1}, match.frame(), ticks_in_frame(match.frame()), 5.f), 1);
+  match.advance();
+  EXPECT_GT(match.truth().robots[0].truth.body.x_mm, lying.x_mm);
+}

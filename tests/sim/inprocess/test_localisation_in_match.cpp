@@ -1,0 +1,61 @@
+// The robots' localisation error against truth in a real (in-process) match: robots
+// walking to their kick-off spots and standing, with the camera's default noise and with
+// none. The figures print for the record; the bounds are what a behaviour relies on.
+#include <cstdio>
+
+#include <gtest/gtest.h>
+
+#include "touchline/behaviour/registry.hpp"
+#include "touchline/inprocess/inprocess_match.hpp"
+
+using namespace touchline;
+
+namespace {
+
+struct Errors {
+  double worst_mm = 0, worst_rad = 0;
+};
+
+Errors four_a_side_errors(const sim::PerceptionDef& perception) {
+  sim::WorldConfig config;
+  config.match.duration_s = 40;
+  config.perception = perception;
+  inprocess::InProcessMatch match(config, 5);
+  const float spots[4][3] = {{-2700, 0, 0}, {-1800, 0, 0}, {-900, 800, 0}, {-900, -800, 0}}; // own frame
+  for (int team = 0; team < 2; ++team)
+    for (int p = 1; p <= 4; ++p) {
+      const float* s = spots[p - 1];
+      auto goto_spot = behaviour::make_behaviour(
+          "goto", {{"x", std::to_string(s[0])}, {"y", std::to_string(s[1])}, {"theta", std::to_string(s[2])}});
+      match.add_robot({team, p}, robot::WalkDef{}, std::move(goto_spot));
+    }
+  match.start();
+  match.run_to_end();
+  Errors errors;
+  for (const auto& [id, member] : match.match().roster().members()) {
+    errors.worst_mm = std::max(errors.worst_mm, member.localisation_rms_mm());
+    errors.worst_rad = std::max(errors.worst_rad, member.localisation_rms_rad());
+    std::printf("  %s: localisation RMS %.1f mm, %.3f rad\n", sim::describe(id).c_str(), member.localisation_rms_mm(),
+                member.localisation_rms_rad());
+  }
+  return errors;
+}
+
+} // namespace
+
+TEST(LocalisationInMatch, WithTheDefaultCameraNoiseEveryRobotStaysWithin100mm) {
+  const Errors errors = four_a_side_errors(sim::PerceptionDef{});
+  EXPECT_LT(errors.worst_mm, 100);
+  EXPECT_LT(errors.worst_rad, 0.1);
+}
+
+TEST(LocalisationInMatch, WithoutNoiseEveryRobotStaysWithin50mm) {
+  sim::PerceptionDef exact;
+  exact.noise = {};
+  exact.noise.distance_sd_mm = exact.noise.distance_sd_fraction = 0;
+  exact.noise.bearing_sd_rad = exact.noise.bearing_sd_rad_per_m = 0;
+  exact.noise.ball_miss_probability = exact.noise.landmark_miss_probability = exact.noise.robot_miss_probability = 0;
+  const Errors errors = four_a_side_errors(exact);
+  EXPECT_LT(errors.worst_mm, 50); // what remains: the filter lags the feet's sway within a step
+  EXPECT_LT(errors.worst_rad, 0.05);
+}
