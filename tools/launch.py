@@ -40,11 +40,17 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
                    help="py: every robot runs the Python behaviour (behaviour_py) with --skill; "
                         "goto: the C++ goto behaviour walks each robot to its kick-off spot")
     p.add_argument("--skill", default="LineUpAndKick", help="the Python behaviour's skill (default LineUpAndKick)")
+    for team in (0, 1):
+        p.add_argument(f"--team{team}", metavar="LANG:SKILL",
+                       help=f"team {team}'s behaviour, e.g. py:Team, cpp:Team, py:Striker "
+                            "(default: --behaviour/--skill)")
     p.add_argument("--config", type=Path, default=ROOT / "config" / "spl2011.ini", help="world config")
     p.add_argument("--walk-config", type=Path, default=ROOT / "config" / "walk.ini", help="walk config")
     p.add_argument("--mode", choices=["lockstep", "realtime", "free"], default="lockstep")
     p.add_argument("--speed", type=float, default=1.0, help="real-time multiple for realtime/free")
     p.add_argument("--seed", type=int, default=1)
+    p.add_argument("--set", action="append", default=[], metavar="SECTION.KEY=VALUE",
+                   help="override a world config value (repeatable), e.g. rules.half_s=300")
     p.add_argument("--build-dir", type=Path, default=DEFAULT_BUILD)
     p.add_argument("--lcm-url", default="udpm://239.255.76.67:7667?ttl=0")
     p.add_argument("--host-network", action="store_true",
@@ -56,6 +62,10 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     args = p.parse_args(argv)
     if not 1 <= args.team_size <= 7:
         p.error("--team-size must be 1..7")
+    for team in (0, 1):
+        spec = getattr(args, f"team{team}")
+        if spec is not None and (spec.count(":") != 1 or spec.split(":")[0] not in ("py", "cpp") or not spec.split(":")[1]):
+            p.error(f"--team{team} must be py:SKILL or cpp:SKILL (got '{spec}')")
     if args.duration is not None and args.duration <= 0:
         p.error("--duration must be > 0")
     return args
@@ -149,11 +159,17 @@ class Launcher:
         targets = kickoff_targets(a.team_size, self.half_length, self.half_width)
         self.start("sim_world", [bin_world, "--config", a.config, "--set", f"match.team_size={a.team_size}",
                                  *(["--duration", a.duration] if a.duration else []),
+                                 *[arg for item in a.set for arg in ("--set", item)],
                                  "--mode", a.mode, "--speed", a.speed, "--seed", a.seed,
                                  "--lcm-url", a.lcm_url, "--summary", summary_path, "--quiet",
                                  *(["--log", log] if log else [])])
         for team, player, x, y, theta in targets:
-            if a.behaviour == "goto":
+            spec = getattr(a, f"team{team}")
+            if spec:
+                language, skill = spec.split(":")
+                behaviour = (["--behaviour", "py", "--param", f"skill={skill}"] if language == "py"
+                             else ["--behaviour", skill])
+            elif a.behaviour == "goto":
                 behaviour = ["--behaviour", "goto", "--param", f"x={x:.0f}", "--param", f"y={y:.0f}",
                              "--param", f"theta={theta:.3f}"]
             else:
@@ -163,6 +179,8 @@ class Launcher:
                         "--field-config", a.config, "--lcm-url", a.lcm_url, *behaviour])
         length = f"{a.duration:.0f} s simulated" if a.duration else "two halves"
         what = a.skill if a.behaviour == "py" else "goto kick-off spots"
+        if a.team0 or a.team1:
+            what = f"{a.team0 or what} v {a.team1 or what}"
         print(f"launch: {2 * a.team_size} robots ({what}), {length}, {a.mode} mode, seed {a.seed}", flush=True)
         world = self.procs[0][1]
         while world.poll() is None:
