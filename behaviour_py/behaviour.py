@@ -1,7 +1,8 @@
 """The robot's behaviour: tick(blackboard) -> robot.All, once per camera frame.
 
 robot.params (strings, set by the shim) picks the body skill with "skill" (default
-GoToBall) and gives its parameters; the head runs LookForBall (TrackBall while the ball was
+GoToBall) and gives its parameters ("Team" plays a match: roles from team messages;
+"Goalie", "Striker", "Midfielder", "Defender" play that one role in a match); the head runs LookForBall (TrackBall while the ball was
 seen recently, else HeadScan); the chest LED says whether the ball is seen. The C++ port is
 behaviour_cpp/src/registry.cpp (same skill names and parameters) and skills/skill_behaviour.
 """
@@ -17,6 +18,8 @@ from skills.head_scan import HeadScan
 from skills.line_up_and_kick import DRIBBLE_POWER, KICK_POWER, LineUpAndKick
 from skills.look_for_ball import LookForBall
 from skills.stand import Stand
+from skills.team import Team
+from skills.team_comm import ROLE_DEFENDER, ROLE_GOALIE, ROLE_MIDFIELDER, ROLE_STRIKER
 from skills.track_ball import TrackBall
 
 DEFAULT_SKILL = "GoToBall"
@@ -91,14 +94,22 @@ def makeLineUpAndKick(p):
     return LineUpAndKick(goalX, goalY, dribble, p.number("power", DRIBBLE_POWER if dribble else KICK_POWER))
 
 
-# Skill name -> (body skill factory, head skill factory). Names match the C++ registry.
-SKILL_NAMES = ("GoToPose", "GoToBall", "LineUpAndKick", "TrackBall", "HeadScan")
+# Skill name -> (body skill factory, head skill factory); a head factory None: the body
+# factory makes the whole behaviour (the team and its roles: head, LEDs, messages, game
+# states). Names match the C++ registry.
+SKILL_NAMES = ("GoToPose", "GoToBall", "LineUpAndKick", "TrackBall", "HeadScan", "Team", "Goalie", "Striker",
+               "Midfielder", "Defender")
 SKILLS = {
     "GoToPose": (makeGoToPose, LookForBall),
     "GoToBall": (makeGoToBall, LookForBall),
     "LineUpAndKick": (makeLineUpAndKick, LookForBall),
     "TrackBall": (lambda p: Stand(), TrackBall),
     "HeadScan": (lambda p: Stand(), HeadScan),
+    "Team": (lambda p: Team(), None),
+    "Goalie": (lambda p: Team(ROLE_GOALIE), None),
+    "Striker": (lambda p: Team(ROLE_STRIKER), None),
+    "Midfielder": (lambda p: Team(ROLE_MIDFIELDER), None),
+    "Defender": (lambda p: Team(ROLE_DEFENDER), None),
 }
 
 
@@ -111,6 +122,8 @@ def makeBehaviour(params):
     reader = ParamReader(name, params)
     body = makeBody(reader)
     reader.rejectUnknown()
+    if makeHead is None:
+        return body
     return SkillBehaviour(body, makeHead())
 
 

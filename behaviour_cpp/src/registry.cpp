@@ -13,6 +13,7 @@
 #include "touchline/behaviour/skills/look_for_ball.hpp"
 #include "touchline/behaviour/skills/skill_behaviour.hpp"
 #include "touchline/behaviour/skills/stand.hpp"
+#include "touchline/behaviour/skills/team.hpp"
 #include "touchline/behaviour/skills/track_ball.hpp"
 #include "touchline/behaviour/walk_skills.hpp"
 
@@ -103,6 +104,16 @@ const std::vector<Entry>& entries() {
        [](ParamReader&) { return with_head<skills::TrackBall>(std::make_unique<skills::Stand>()); }},
       {"HeadScan", "stands, head sweeping side to side",
        [](ParamReader&) { return with_head<skills::HeadScan>(std::make_unique<skills::Stand>()); }},
+      // The team and its roles: whole behaviours (head, LEDs, team messages, game states).
+      {"Team", "plays a match: roles (goalie, striker, defender, midfielder) from team messages",
+       [](ParamReader&) { return std::make_unique<skills::Team>(); }},
+      {"Goalie", "plays a match as goalie", [](ParamReader&) { return std::make_unique<skills::Team>(skills::ROLE_GOALIE); }},
+      {"Striker", "plays a match as striker",
+       [](ParamReader&) { return std::make_unique<skills::Team>(skills::ROLE_STRIKER); }},
+      {"Midfielder", "plays a match as midfielder (thesis Algorithm 4.1)",
+       [](ParamReader&) { return std::make_unique<skills::Team>(skills::ROLE_MIDFIELDER); }},
+      {"Defender", "plays a match as defender (thesis Algorithm 4.2)",
+       [](ParamReader&) { return std::make_unique<skills::Team>(skills::ROLE_DEFENDER); }},
   };
   return all;
 }

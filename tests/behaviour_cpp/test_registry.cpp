@@ -24,7 +24,7 @@ TEST(Registry, UnknownNameListsTheKnownOnes) {
     make_behaviour("striker9000", {});
     FAIL();
   } catch (const BehaviourError& e) {
-    EXPECT_EQ(std::string(e.what()), "unknown behaviour 'striker9000' (known: stand, walk, goto, GoToPose, GoToBall, LineUpAndKick, TrackBall, HeadScan)");
+    EXPECT_EQ(std::string(e.what()), "unknown behaviour 'striker9000' (known: stand, walk, goto, GoToPose, GoToBall, LineUpAndKick, TrackBall, HeadScan, Team, Goalie, Striker, Midfielder, Defender)");
   }
 }
 

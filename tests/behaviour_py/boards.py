@@ -10,9 +10,12 @@ from types import SimpleNamespace
 import robot
 
 
-def board(pos=(0.0, 0.0, 0.0), ball=(1000.0, 0.0), seen=True, lost=0, headYaw=0.0, utime=0):
+def board(pos=(0.0, 0.0, 0.0), ball=(1000.0, 0.0), seen=True, lost=0, headYaw=0.0, utime=0,
+          state=robot.GameState.PLAYING, player=2, penalised=False, fallen=False, messages=()):
     """The robot at pos (x, y, theta), the ball at the field point `ball`; vision and
-    localisation agree on it. seen: vision.ballSeen; lost: localisation.ballLostCount."""
+    localisation agree on it. seen: vision.ballSeen; lost: localisation.ballLostCount;
+    state, player, penalised: gameController; fallen: motion.fallen; messages: receiver
+    (objects with playerNumber, utime, data)."""
     robotPos = robot.AbsCoord(*pos)
     ballPos = robot.AbsCoord(ball[0], ball[1], 0.0)
     ballRR = robot.toRobotRelative(robotPos, ballPos.x, ballPos.y)
@@ -20,8 +23,15 @@ def board(pos=(0.0, 0.0, 0.0), ball=(1000.0, 0.0), seen=True, lost=0, headYaw=0.
         utime=utime,
         localisation=SimpleNamespace(robotPos=robotPos, ballPos=ballPos, ballPosRR=ballRR, ballLostCount=lost),
         vision=SimpleNamespace(ballSeen=seen, ball=ballRR),
-        motion=SimpleNamespace(headYaw=headYaw),
+        motion=SimpleNamespace(headYaw=headYaw, fallen=fallen),
+        gameController=SimpleNamespace(state=state, team=0, playerNumber=player, penalised=penalised),
+        receiver=SimpleNamespace(messages=list(messages)),
     )
+
+
+def message(playerNumber, data, utime=0):
+    """A received team message, as blackboard.receiver.messages holds them."""
+    return SimpleNamespace(playerNumber=playerNumber, utime=utime, data=bytes(data))
 
 
 def relative(pos, forward, left):

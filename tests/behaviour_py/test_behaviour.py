@@ -73,7 +73,8 @@ def test_every_skill_is_made_with_its_defaults():
 def test_unknown_skill_lists_the_known_ones():
     with pytest.raises(behaviour.BehaviourError) as error:
         behaviour.makeBehaviour({"skill": "Striker9000"})
-    assert str(error.value) == "unknown skill 'Striker9000' (known: GoToPose, GoToBall, LineUpAndKick, TrackBall, HeadScan)"
+    assert str(error.value) == ("unknown skill 'Striker9000' (known: GoToPose, GoToBall, LineUpAndKick, TrackBall, "
+                                "HeadScan, Team, Goalie, Striker, Midfielder, Defender)")
 
 
 @pytest.mark.parametrize("params", [

@@ -8,7 +8,8 @@ import re
 import pytest
 
 import behaviour
-from skills import ball, camera, go_to_pose, head_scan, line_up_and_kick, robot_limits
+from skills import (ball, camera, field, go_to_pose, goalie, head_scan, line_up_and_kick, robot_limits, striker,
+                    supporter, team, team_comm)
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 CPP_SKILLS = ROOT / "behaviour_cpp" / "include" / "touchline" / "behaviour" / "skills"
@@ -41,7 +42,8 @@ def python_constants():
     """name -> value of every module-level UPPER_CASE number in behaviour_py/skills and the
     chest colours of behaviour.py."""
     modules = {"ball": ball, "camera": camera, "go_to_pose": go_to_pose, "head_scan": head_scan,
-               "line_up_and_kick": line_up_and_kick, "robot_limits": robot_limits}
+               "line_up_and_kick": line_up_and_kick, "robot_limits": robot_limits, "field": field, "goalie": goalie,
+               "striker": striker, "supporter": supporter, "team": team, "team_comm": team_comm}
     assert {path.stem for path in PY_SKILLS.glob("*.py")} - set(modules) <= {"__init__", "go_to_ball", "look_for_ball",
                                                                               "stand", "track_ball"}
     values = {}

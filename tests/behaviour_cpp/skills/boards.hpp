@@ -2,7 +2,9 @@
 // Blackboards with values for the skill tests: the same boards as
 // tests/behaviour_py/boards.py builds for the Python skills.
 #include <cmath>
+#include <cstdint>
 #include <utility>
+#include <vector>
 
 #include "touchline/robot_api/blackboard.hpp"
 
@@ -20,6 +22,22 @@ inline api::Blackboard board(api::AbsCoord pos = {}, float ballX = 1000.f, float
   blackboard.vision.ballSeen = seen;
   blackboard.vision.ball = blackboard.localisation.ballPosRR;
   blackboard.motion.headYaw = headYaw;
+  return blackboard;
+}
+
+/// board() in a match, as tests/behaviour_py/boards.py's board() defaults to: state,
+/// player, penalised (gameController), fallen (motion), messages (receiver), utime.
+inline api::Blackboard teamBoard(api::AbsCoord pos = {}, float ballX = 1000.f, float ballY = 0.f, bool seen = true,
+                                 int lost = 0, api::GameState state = api::GameState::PLAYING, int player = 2,
+                                 bool penalised = false, bool fallen = false,
+                                 std::vector<api::TeamMessage> messages = {}, int64_t utime = 0) {
+  api::Blackboard blackboard = board(pos, ballX, ballY, seen, lost);
+  blackboard.utime = utime;
+  blackboard.gameController.state = state;
+  blackboard.gameController.playerNumber = player;
+  blackboard.gameController.penalised = penalised;
+  blackboard.motion.fallen = fallen;
+  blackboard.receiver.messages = std::move(messages);
   return blackboard;
 }
 

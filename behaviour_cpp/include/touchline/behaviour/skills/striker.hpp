@@ -1,0 +1,26 @@
+#pragma once
+// Striker: to the ball, lined up at the opponent goal (LineUpAndKick); kicks, or dribbles
+// while the ball is within STRIKER_DRIBBLE_DIST of the opponent goal's centre. The choice is
+// made while neither is lining up and kept through a line-up. The port of
+// behaviour_py/skills/striker.py.
+#include "touchline/behaviour/skills/line_up_and_kick.hpp"
+
+namespace touchline::behaviour::skills {
+
+inline constexpr float STRIKER_DRIBBLE_DIST = 1000.f; ///< mm: dribble this close to the opponent goal, else kick
+
+bool shouldDribble(float ballX, float ballY);
+
+class Striker : public api::Behaviour {
+ public:
+  Striker();
+  api::ActionCommand::All tick(const api::Blackboard& blackboard) override;
+  bool dribbling() const { return dribbling_; }
+
+ private:
+  LineUpAndKick kick_;
+  LineUpAndKick dribble_;
+  bool dribbling_ = false;
+};
+
+} // namespace touchline::behaviour::skills

@@ -1,0 +1,72 @@
+#pragma once
+// Team: the whole robot for a match. Game states, team messages, roles; the port of
+// behaviour_py/skills/team.py.
+//
+// Every tick the head runs LookForBall and, every MESSAGE_EVERY_FRAMES frames (counted by its
+// own ticks, never wall time), the request carries this robot's team message. The body:
+// penalised or fallen: stand (it gets up by itself); INITIAL, SET, FINISHED: stand; READY:
+// walk to the player number's kick-off position (a fixed legal formation in the own half,
+// outside the centre circle: the API does not say which team kicks off); PLAYING: the role's
+// skill, roles assigned from the team messages (assignRole) unless fixed. A striker, or a
+// supporter back home, that has not seen the ball for SEARCH_TURN_FRAMES turns on the spot
+// towards the side it was last seen on.
+#include <cstdint>
+
+#include "touchline/behaviour/skills/goalie.hpp"
+#include "touchline/behaviour/skills/look_for_ball.hpp"
+#include "touchline/behaviour/skills/striker.hpp"
+#include "touchline/behaviour/skills/supporter.hpp"
+#include "touchline/behaviour/skills/team_comm.hpp"
+
+namespace touchline::behaviour::skills {
+
+inline constexpr int32_t TEAM_BALL_SEEN_CHEST = 0x00ff00;     ///< green: the ball was seen recently
+inline constexpr int32_t TEAM_BALL_LOST_CHEST = 0xff0000;     ///< red: searching
+inline constexpr int SEARCH_TURN_FRAMES = 90;                 ///< frames (3 s) without the ball before turning to search
+inline constexpr float SEARCH_TURN_SPEED = 0.8f;              ///< rad/s
+inline constexpr float HOME_NEAR_DIST = 300.f;                ///< mm: a supporter this close to home may turn to search
+inline constexpr float READY_GOALIE_X = GOALIE_HOME_X;        ///< mm: the kick-off formation (player 1 ...
+inline constexpr float READY_GOALIE_Y = 0.f;
+inline constexpr float READY_STRIKER_X = -700.f;              ///< mm: ... player 2, outside the 600 mm centre circle ...
+inline constexpr float READY_STRIKER_Y = 0.f;
+inline constexpr float READY_DEFENDER_X = -1800.f;            ///< mm: ... player 3 ...
+inline constexpr float READY_DEFENDER_Y = -600.f;
+inline constexpr float READY_MIDFIELDER_X = -1200.f;          ///< mm: ... player 4; players 5 on: 3 and 4 mirrored in y)
+inline constexpr float READY_MIDFIELDER_Y = 900.f;
+
+/// The role whose kick-off position a player takes: 1 goalie, 2 striker, 3 defender,
+/// 4 midfielder, then defender and midfielder alternately.
+int formationRole(int playerNumber);
+/// (x, y) of the player's kick-off position, team frame, facing +x.
+FieldPoint readyPosition(int playerNumber);
+/// (x, y) a role walks back to while the ball is lost.
+FieldPoint homePosition(int role);
+/// This robot's TeamInfo from its Blackboard.
+TeamInfo messageInfo(const api::Blackboard& blackboard, int role);
+
+class Team : public api::Behaviour {
+ public:
+  /// fixedRole: play this role always (ROLE_NONE: assign roles from the messages).
+  explicit Team(int fixedRole = ROLE_NONE);
+  api::ActionCommand::All tick(const api::Blackboard& blackboard) override;
+  int role() const { return role_; }
+
+ private:
+  int chooseRole(const api::Blackboard& blackboard) const;
+  api::ActionCommand::Body body(const api::Blackboard& blackboard);
+  /// Turn on the spot to find the ball: a striker, or a supporter at home, that has not seen
+  /// it for SEARCH_TURN_FRAMES.
+  bool searching(const api::Blackboard& blackboard) const;
+
+  int fixedRole_;
+  int role_;
+  Goalie goalie_;
+  Striker striker_;
+  Defender defender_;
+  Midfielder midfielder_;
+  GoToPose readyPose_;
+  LookForBall head_;
+  int64_t frame_ = 0;
+};
+
+} // namespace touchline::behaviour::skills

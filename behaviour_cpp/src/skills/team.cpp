@@ -1,0 +1,86 @@
+#include "touchline/behaviour/skills/team.hpp"
+
+#include "touchline/behaviour/skills/actioncommand.hpp"
+#include "touchline/behaviour/skills/ball.hpp"
+
+namespace touchline::behaviour::skills {
+
+using namespace api;
+
+int formationRole(int playerNumber) {
+  if (playerNumber == GOALIE_PLAYER) return ROLE_GOALIE;
+  if (playerNumber == 2) return ROLE_STRIKER;
+  return playerNumber % 2 == 1 ? ROLE_DEFENDER : ROLE_MIDFIELDER;
+}
+
+FieldPoint readyPosition(int playerNumber) {
+  const int role = formationRole(playerNumber);
+  if (role == ROLE_GOALIE) return {READY_GOALIE_X, READY_GOALIE_Y};
+  if (role == ROLE_STRIKER) return {READY_STRIKER_X, READY_STRIKER_Y};
+  const float mirror = playerNumber >= 5 ? -1.f : 1.f;
+  if (role == ROLE_DEFENDER) return {READY_DEFENDER_X, mirror * READY_DEFENDER_Y};
+  return {READY_MIDFIELDER_X, mirror * READY_MIDFIELDER_Y};
+}
+
+FieldPoint homePosition(int role) {
+  if (role == ROLE_DEFENDER) return {DEF_HOME_X, DEF_HOME_Y};
+  if (role == ROLE_MIDFIELDER) return {MID_HOME_X, MID_HOME_Y};
+  return {GOALIE_HOME_X, 0.f};
+}
+
+TeamInfo messageInfo(const Blackboard& blackboard, int role) {
+  const GameControllerBlackboard& gc = blackboard.gameController;
+  const AbsCoord ball = blackboard.localisation.ballPos;
+  return makeTeamInfo(gc.playerNumber, role, ballRecentlySeen(blackboard), gc.penalised, blackboard.motion.fallen,
+                      blackboard.localisation.ballPosRR.distance, ball.x, ball.y);
+}
+
+Team::Team(int fixedRole) : fixedRole_(fixedRole), role_(fixedRole) {}
+
+ActionCommand::All Team::tick(const Blackboard& blackboard) {
+  role_ = chooseRole(blackboard);
+  const ActionCommand::Body bodyRequest = body(blackboard);
+  const ActionCommand::Head head = head_.tick(blackboard).head;
+  const int32_t chest = ballRecentlySeen(blackboard) ? TEAM_BALL_SEEN_CHEST : TEAM_BALL_LOST_CHEST;
+  ActionCommand::All command = actioncommand::compose(head, bodyRequest, actioncommand::leds(chest));
+  if (frame_ % MESSAGE_EVERY_FRAMES == 0) command.teamMessage = encodeMessage(messageInfo(blackboard, role_));
+  frame_ += 1;
+  return command;
+}
+
+int Team::chooseRole(const Blackboard& blackboard) const {
+  if (fixedRole_ != ROLE_NONE) return fixedRole_;
+  const TeamInfo info = messageInfo(blackboard, role_);
+  return assignRole(info.playerNumber, info.ballDistance, role_, blackboard.receiver.messages, blackboard.utime);
+}
+
+ActionCommand::Body Team::body(const Blackboard& blackboard) {
+  const GameControllerBlackboard& gc = blackboard.gameController;
+  if (gc.penalised || blackboard.motion.fallen) return actioncommand::stand();
+  if (gc.state == GameState::READY) {
+    const FieldPoint ready = readyPosition(gc.playerNumber);
+    readyPose_.setTarget(ready.x, ready.y, 0.f);
+    return readyPose_.tick(blackboard).body;
+  }
+  if (gc.state != GameState::PLAYING) return actioncommand::stand();
+  if (searching(blackboard)) {
+    const float turn = blackboard.localisation.ballPosRR.heading >= 0.f ? SEARCH_TURN_SPEED : -SEARCH_TURN_SPEED;
+    return actioncommand::walk(0.f, 0.f, turn);
+  }
+  switch (role_) {
+    case ROLE_GOALIE: return goalie_.tick(blackboard).body;
+    case ROLE_STRIKER: return striker_.tick(blackboard).body;
+    case ROLE_DEFENDER: return defender_.tick(blackboard).body;
+    default: return midfielder_.tick(blackboard).body;
+  }
+}
+
+bool Team::searching(const Blackboard& blackboard) const {
+  if (blackboard.localisation.ballLostCount <= SEARCH_TURN_FRAMES || role_ == ROLE_GOALIE) return false;
+  if (role_ == ROLE_STRIKER) return true;
+  const FieldPoint home = homePosition(role_);
+  const AbsCoord pos = blackboard.localisation.robotPos;
+  return distance(pos.x, pos.y, home.x, home.y) < HOME_NEAR_DIST;
+}
+
+} // namespace touchline::behaviour::skills

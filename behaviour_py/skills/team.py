@@ -1,0 +1,133 @@
+"""Team: the whole robot for a match. Game states, team messages, roles.
+
+Every tick the head runs LookForBall and, every MESSAGE_EVERY_FRAMES frames (counted by its
+own ticks, never wall time), the request carries this robot's team message. The body:
+penalised or fallen: stand (it gets up by itself); INITIAL, SET, FINISHED: stand; READY: walk
+to the player number's kick-off position (a fixed legal formation in the own half, outside
+the centre circle: the API does not say which team kicks off); PLAYING: the role's skill,
+roles assigned from the team messages (team_comm.assignRole) unless fixed. A striker, or a
+supporter back home, that has not seen the ball for SEARCH_TURN_FRAMES turns on the spot
+towards the side it was last seen on.
+"""
+import actioncommand
+import robot
+
+from .ball import ballRecentlySeen
+from .field import distance
+from .goalie import GOALIE_HOME_X, Goalie
+from .go_to_pose import GoToPose
+from .look_for_ball import LookForBall
+from .striker import Striker
+from .supporter import DEF_HOME_X, DEF_HOME_Y, MID_HOME_X, MID_HOME_Y, Defender, Midfielder
+from .team_comm import (GOALIE_PLAYER, MESSAGE_EVERY_FRAMES, ROLE_DEFENDER, ROLE_GOALIE, ROLE_MIDFIELDER, ROLE_NONE,
+                        ROLE_STRIKER, assignRole, encodeMessage, makeTeamInfo)
+
+TEAM_BALL_SEEN_CHEST = 0x00ff00  # green: the ball was seen recently
+TEAM_BALL_LOST_CHEST = 0xff0000  # red: searching
+SEARCH_TURN_FRAMES = 90          # frames (3 s) without the ball before turning to search
+SEARCH_TURN_SPEED = 0.8          # rad/s
+HOME_NEAR_DIST = 300.0           # mm: a supporter this close to home may turn to search
+READY_GOALIE_X = GOALIE_HOME_X   # mm: the kick-off formation (player 1 ...
+READY_GOALIE_Y = 0.0
+READY_STRIKER_X = -700.0         # mm: ... player 2, outside the 600 mm centre circle ...
+READY_STRIKER_Y = 0.0
+READY_DEFENDER_X = -1800.0       # mm: ... player 3 ...
+READY_DEFENDER_Y = -600.0
+READY_MIDFIELDER_X = -1200.0     # mm: ... player 4; players 5 on: 3 and 4 mirrored in y)
+READY_MIDFIELDER_Y = 900.0
+
+
+def formationRole(playerNumber):
+    """The role whose kick-off position a player takes: 1 goalie, 2 striker, 3 defender,
+    4 midfielder, then defender and midfielder alternately."""
+    if playerNumber == GOALIE_PLAYER:
+        return ROLE_GOALIE
+    if playerNumber == 2:
+        return ROLE_STRIKER
+    return ROLE_DEFENDER if playerNumber % 2 == 1 else ROLE_MIDFIELDER
+
+
+def readyPosition(playerNumber):
+    """(x, y) of the player's kick-off position, team frame, facing +x."""
+    role = formationRole(playerNumber)
+    if role == ROLE_GOALIE:
+        return READY_GOALIE_X, READY_GOALIE_Y
+    if role == ROLE_STRIKER:
+        return READY_STRIKER_X, READY_STRIKER_Y
+    mirror = -1.0 if playerNumber >= 5 else 1.0
+    if role == ROLE_DEFENDER:
+        return READY_DEFENDER_X, mirror * READY_DEFENDER_Y
+    return READY_MIDFIELDER_X, mirror * READY_MIDFIELDER_Y
+
+
+def homePosition(role):
+    """(x, y) a role walks back to while the ball is lost."""
+    if role == ROLE_DEFENDER:
+        return DEF_HOME_X, DEF_HOME_Y
+    if role == ROLE_MIDFIELDER:
+        return MID_HOME_X, MID_HOME_Y
+    return GOALIE_HOME_X, 0.0
+
+
+def messageInfo(blackboard, role):
+    """This robot's TeamInfo from its Blackboard."""
+    gc = blackboard.gameController
+    ball = blackboard.localisation.ballPos
+    return makeTeamInfo(gc.playerNumber, role, ballRecentlySeen(blackboard), gc.penalised, blackboard.motion.fallen,
+                        blackboard.localisation.ballPosRR.distance, ball.x, ball.y)
+
+
+class Team:
+    def __init__(self, fixedRole=ROLE_NONE):
+        """fixedRole: play this role always (ROLE_NONE: assign roles from the messages)."""
+        self.fixedRole = fixedRole
+        self.role = fixedRole
+        self.skills = {ROLE_GOALIE: Goalie(), ROLE_STRIKER: Striker(), ROLE_DEFENDER: Defender(),
+                       ROLE_MIDFIELDER: Midfielder()}
+        self.readyPose = GoToPose()
+        self.head = LookForBall()
+        self.frame = 0
+
+    def tick(self, blackboard):
+        self.role = self.chooseRole(blackboard)
+        body = self.body(blackboard)
+        head = self.head.tick(blackboard).head
+        chest = TEAM_BALL_SEEN_CHEST if ballRecentlySeen(blackboard) else TEAM_BALL_LOST_CHEST
+        command = actioncommand.compose(head=head, body=body, leds=actioncommand.leds(chest))
+        if self.frame % MESSAGE_EVERY_FRAMES == 0:
+            command.teamMessage = encodeMessage(messageInfo(blackboard, self.role))
+        self.frame += 1
+        return command
+
+    def chooseRole(self, blackboard):
+        if self.fixedRole != ROLE_NONE:
+            return self.fixedRole
+        info = messageInfo(blackboard, self.role)
+        return assignRole(info.playerNumber, info.ballDistance, self.role, blackboard.receiver.messages,
+                          blackboard.utime)
+
+    def body(self, blackboard):
+        gc = blackboard.gameController
+        if gc.penalised or blackboard.motion.fallen:
+            return actioncommand.stand()
+        if gc.state == robot.GameState.READY:
+            x, y = readyPosition(gc.playerNumber)
+            self.readyPose.setTarget(x, y, 0.0)
+            return self.readyPose.tick(blackboard).body
+        if gc.state != robot.GameState.PLAYING:
+            return actioncommand.stand()
+        if self.searching(blackboard):
+            turn = SEARCH_TURN_SPEED if blackboard.localisation.ballPosRR.heading >= 0.0 else -SEARCH_TURN_SPEED
+            return actioncommand.walk(turn=turn)
+        return self.skills[self.role].tick(blackboard).body
+
+    def searching(self, blackboard):
+        """Turn on the spot to find the ball: a striker, or a supporter at home, that has
+        not seen it for SEARCH_TURN_FRAMES."""
+        if blackboard.localisation.ballLostCount <= SEARCH_TURN_FRAMES or self.role == ROLE_GOALIE:
+            return False
+        if self.role == ROLE_STRIKER:
+            return True
+        homeX, homeY = homePosition(self.role)
+        pos = blackboard.localisation.robotPos
+        return distance(pos.x, pos.y, homeX, homeY) < HOME_NEAR_DIST
