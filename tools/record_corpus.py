@@ -20,33 +20,44 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 LCM_URL = "udpm://239.255.76.67:7667?ttl=0"
 
-# (skill parameters for every robot, ball start, seconds). Robots start on their touchlines.
+# (skill parameters for every robot, ball start, seconds, robots, world overrides). Robots
+# start on their touchlines; the team scenarios shorten READY so PLAYING comes soon.
+THREE = [(0, 1), (0, 3), (1, 2)]
+FOUR_A_SIDE = [(t, p) for t in (0, 1) for p in range(1, 5)]
+QUICK_KICKOFF = ["rules.ready_s=6", "rules.set_s=1"]
 SCENARIOS = [
-    ({"skill": "GoToBall"}, (0, 0), 12),
-    ({"skill": "GoToBall"}, (-1200, 900), 12),
-    ({"skill": "LineUpAndKick"}, (600, -500), 15),
-    ({"skill": "LineUpAndKick", "dribble": "1"}, (-400, 300), 15),
-    ({"skill": "GoToPose", "x": "-1500", "y": "300", "theta": "0.7"}, (0, 0), 10),
-    ({"skill": "GoToPose", "x": "500", "y": "-800", "theta": "-2.5", "face_ball": "1"}, (1000, 1000), 10),
-    ({"skill": "TrackBall"}, (-800, -600), 6),
-    ({"skill": "HeadScan"}, (2500, 1500), 6),
+    ({"skill": "GoToBall"}, (0, 0), 12, THREE, []),
+    ({"skill": "GoToBall"}, (-1200, 900), 12, THREE, []),
+    ({"skill": "LineUpAndKick"}, (600, -500), 15, THREE, []),
+    ({"skill": "LineUpAndKick", "dribble": "1"}, (-400, 300), 15, THREE, []),
+    ({"skill": "GoToPose", "x": "-1500", "y": "300", "theta": "0.7"}, (0, 0), 10, THREE, []),
+    ({"skill": "GoToPose", "x": "500", "y": "-800", "theta": "-2.5", "face_ball": "1"}, (1000, 1000), 10, THREE, []),
+    ({"skill": "TrackBall"}, (-800, -600), 6, THREE, []),
+    ({"skill": "HeadScan"}, (2500, 1500), 6, THREE, []),
+    ({"skill": "Team"}, (0, 0), 24, FOUR_A_SIDE, QUICK_KICKOFF),
+    ({"skill": "Team"}, (-1500, 1000), 24, FOUR_A_SIDE, QUICK_KICKOFF),
+    ({"skill": "Striker"}, (800, 400), 16, THREE, QUICK_KICKOFF),
+    ({"skill": "Goalie"}, (-2200, 300), 16, THREE, QUICK_KICKOFF),
+    ({"skill": "Midfielder"}, (1600, -700), 16, THREE, QUICK_KICKOFF),
+    ({"skill": "Defender"}, (-1000, 500), 16, THREE, QUICK_KICKOFF),
 ]
-ROBOTS = [(0, 1), (0, 3), (1, 2)]
 
 
-def run_scenario(build: Path, params: dict, ball: tuple, seconds: float, log: Path) -> None:
-    world = subprocess.Popen([build / "sim" / "sim_world", "--robots", str(len(ROBOTS)), "--duration", str(seconds),
+def run_scenario(build: Path, params: dict, ball: tuple, seconds: float, robots: list, sets: list,
+                 log: Path) -> None:
+    overrides = [f"match.ball_start_x_mm={ball[0]}", f"match.ball_start_y_mm={ball[1]}", *sets]
+    world = subprocess.Popen([build / "sim" / "sim_world", "--robots", str(len(robots)), "--duration", str(seconds),
                               "--quiet", "--lcm-url", LCM_URL, "--log", log,
-                              "--set", f"match.ball_start_x_mm={ball[0]}", "--set", f"match.ball_start_y_mm={ball[1]}"],
+                              *[a for o in overrides for a in ("--set", o)]],
                              stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     shims = []
-    for team, player in ROBOTS:
+    for team, player in robots:
         args = [build / "robot_shim" / "robot_shim", "--team", str(team), "--player", str(player), "--behaviour", "py",
                 "--lcm-url", LCM_URL, "--snapshot-every", "1"]
         for key, value in params.items():
             args += ["--param", f"{key}={value}"]
         shims.append(subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True))
-    for name, proc in [("sim_world", world)] + [(f"robot_shim {t}/{p}", s) for (t, p), s in zip(ROBOTS, shims)]:
+    for name, proc in [("sim_world", world)] + [(f"robot_shim {t}/{p}", s) for (t, p), s in zip(robots, shims)]:
         _, err = proc.communicate(timeout=120)
         if proc.returncode != 0:
             raise SystemExit(f"record_corpus: {name} exited {proc.returncode}: {err.strip().splitlines()[-1:]}")
@@ -64,9 +75,9 @@ def main() -> int:
     count = 0
     with tempfile.TemporaryDirectory() as tmp:
         out = lcm.EventLog(str(args.out), "w", overwrite=True)
-        for index, (params, ball, seconds) in enumerate(SCENARIOS):
+        for index, (params, ball, seconds, robots, sets) in enumerate(SCENARIOS):
             log = Path(tmp) / f"scenario{index}.lcmlog"
-            run_scenario(args.build_dir, params, ball, seconds, log)
+            run_scenario(args.build_dir, params, ball, seconds, robots, sets, log)
             for event in lcm.EventLog(str(log), "r"):
                 if event.channel.startswith("TL_BLACKBOARD_"):
                     out.write_event(event.timestamp, event.channel, event.data)

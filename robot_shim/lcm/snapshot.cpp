@@ -106,6 +106,16 @@ blackboard_snapshot_t to_snapshot(const api::Blackboard& bb, RobotId id, int64_t
   m.score[1] = static_cast<int16_t>(gc.score[1]);
   m.secs_remaining = gc.secsRemaining;
 
+  m.num_messages = static_cast<int16_t>(bb.receiver.messages.size());
+  for (const api::TeamMessage& message : bb.receiver.messages) {
+    team_message_t out;
+    out.player = static_cast<int8_t>(message.playerNumber);
+    out.sent_utime = message.utime;
+    out.size = static_cast<int16_t>(message.data.size());
+    out.data = message.data;
+    m.messages.push_back(out);
+  }
+
   m.request_head = head(bb.behaviour.request.head);
   m.request_body = body(bb.behaviour.request.body);
   m.request_leds = bb.behaviour.request.leds.chest;
@@ -143,6 +153,9 @@ api::Blackboard from_snapshot(const blackboard_snapshot_t& m) {
   gc.penalised = m.penalised;
   gc.score = {{m.score[0], m.score[1]}};
   gc.secsRemaining = m.secs_remaining;
+
+  for (const team_message_t& message : m.messages)
+    bb.receiver.messages.push_back({message.player, message.sent_utime, message.data});
 
   bb.behaviour.request.head = head(m.request_head);
   bb.behaviour.request.body = body(m.request_body);

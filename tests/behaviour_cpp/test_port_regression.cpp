@@ -188,7 +188,8 @@ TEST(PortCorpus, HasThousandsOfFramesCoveringEverySkill) {
     skills.insert(params_of(run.behaviour)["skill"]);
   }
   EXPECT_GE(frames, 3000u);
-  const std::set<std::string> every = {"GoToBall", "GoToPose", "LineUpAndKick", "TrackBall", "HeadScan"};
+  const std::set<std::string> every = {"GoToBall", "GoToPose", "LineUpAndKick", "TrackBall", "HeadScan",
+                                       "Team",     "Striker",  "Goalie",        "Midfielder", "Defender"};
   for (const std::string& skill : every) EXPECT_TRUE(skills.count(skill)) << "no frames of " << skill;
 }
 

@@ -40,6 +40,7 @@ api::Blackboard sample() {
   bb.behaviour.request.body.foot = AC::Foot::RIGHT;
   bb.behaviour.request.body.power = 0.8f;
   bb.behaviour.request.leds.chest = 0x0000ff;
+  bb.receiver.messages = {{2, 1200000, {1, 2, 3}}, {4, 1100000, {}}};
   return bb;
 }
 
@@ -82,6 +83,10 @@ TEST(Snapshot, BlackboardSurvivesEncodeAndDecode) {
   EXPECT_EQ(out.behaviour.request.body.foot, AC::Foot::RIGHT);
   EXPECT_EQ(out.behaviour.request.body.power, 0.8f);
   EXPECT_EQ(out.behaviour.request.leds.chest, 0x0000ff);
+  ASSERT_EQ(out.receiver.messages.size(), 2u);
+  EXPECT_EQ(out.receiver.messages[0].playerNumber, 2);
+  EXPECT_EQ(out.receiver.messages[0].utime, 1200000);
+  EXPECT_EQ(out.receiver.messages[0].data, (std::vector<uint8_t>{1, 2, 3}));
 }
 
 TEST(Snapshot, ChannelNamesTheRobot) {

@@ -14,7 +14,7 @@ std::string snapshot_channel(RobotId id);
 
 blackboard_snapshot_t to_snapshot(const api::Blackboard& blackboard, RobotId id, int64_t frame);
 
-/// The Blackboard the snapshot was taken from (receiver messages are not recorded).
+/// The Blackboard the snapshot was taken from.
 api::Blackboard from_snapshot(const blackboard_snapshot_t& snapshot);
 
 } // namespace touchline::transport
