@@ -26,6 +26,8 @@ TEAM_BALL_SEEN_CHEST = 0x00ff00  # green: the ball was seen recently
 TEAM_BALL_LOST_CHEST = 0xff0000  # red: searching
 SEARCH_TURN_FRAMES = 90          # frames (3 s) without the ball before turning to search
 SEARCH_TURN_SPEED = 0.8          # rad/s
+SEARCH_TURN_LIMIT_FRAMES = 220   # frames of turning (5.9 rad, just under a full turn): no spinning on the spot
+SEARCH_CYCLE_FRAMES = 520        # frames from one search turn to the next (10 s of the role's own play between)
 HOME_NEAR_DIST = 300.0           # mm: a supporter this close to home may turn to search
 READY_GOALIE_X = GOALIE_HOME_X   # mm: the kick-off formation (player 1 ...
 READY_GOALIE_Y = 0.0
@@ -123,8 +125,10 @@ class Team:
 
     def searching(self, blackboard):
         """Turn on the spot to find the ball: a striker, or a supporter at home, that has
-        not seen it for SEARCH_TURN_FRAMES."""
-        if blackboard.localisation.ballLostCount <= SEARCH_TURN_FRAMES or self.role == ROLE_GOALIE:
+        not seen it for SEARCH_TURN_FRAMES; at most SEARCH_TURN_LIMIT_FRAMES of every
+        SEARCH_CYCLE_FRAMES, so the robot never spins on the spot."""
+        lost = blackboard.localisation.ballLostCount - SEARCH_TURN_FRAMES
+        if lost <= 0 or self.role == ROLE_GOALIE or (lost - 1) % SEARCH_CYCLE_FRAMES >= SEARCH_TURN_LIMIT_FRAMES:
             return False
         if self.role == ROLE_STRIKER:
             return True

@@ -76,7 +76,9 @@ ActionCommand::Body Team::body(const Blackboard& blackboard) {
 }
 
 bool Team::searching(const Blackboard& blackboard) const {
-  if (blackboard.localisation.ballLostCount <= SEARCH_TURN_FRAMES || role_ == ROLE_GOALIE) return false;
+  // At most SEARCH_TURN_LIMIT_FRAMES of every SEARCH_CYCLE_FRAMES: never spinning on the spot.
+  const int lost = blackboard.localisation.ballLostCount - SEARCH_TURN_FRAMES;
+  if (lost <= 0 || role_ == ROLE_GOALIE || (lost - 1) % SEARCH_CYCLE_FRAMES >= SEARCH_TURN_LIMIT_FRAMES) return false;
   if (role_ == ROLE_STRIKER) return true;
   const FieldPoint home = homePosition(role_);
   const AbsCoord pos = blackboard.localisation.robotPos;
