@@ -38,7 +38,7 @@ def play(build: Path, team0: str, team1: str, seed: int, extra: list, workdir: P
     result = subprocess.run(args, capture_output=True, text=True)
     if result.returncode != 0:
         raise SystemExit(f"evaluate_teams: match seed {seed} failed: {result.stderr.strip().splitlines()[-1:]}")
-    log = next(workdir.glob(f"*_seed{seed}.lcmlog"))
+    log = max(workdir.glob(f"*_seed{seed}.lcmlog"), key=lambda p: p.stat().st_mtime)  # this match's
     return json.loads(summary.read_text()), log
 
 
