@@ -4,8 +4,8 @@ for them, shuts everything down cleanly on Ctrl-C or when any process fails (nam
 and why), and prints what happened.
 
 Every match is recorded to an LCM event log (lcm-logger format) named by date and seed.
-By default every robot runs the Python behaviour (behaviour_py) with one skill; roles
-come with the team behaviour.
+By default every robot runs the Python behaviour (behaviour_py) as a team: a goalie, and
+the striker, defender and midfielder chosen through team communication (thesis ch. 4).
 """
 from __future__ import annotations
 
@@ -39,7 +39,8 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     p.add_argument("--behaviour", choices=["py", "goto"], default="py",
                    help="py: every robot runs the Python behaviour (behaviour_py) with --skill; "
                         "goto: the C++ goto behaviour walks each robot to its kick-off spot")
-    p.add_argument("--skill", default="LineUpAndKick", help="the Python behaviour's skill (default LineUpAndKick)")
+    p.add_argument("--skill", default="Team", help="the Python behaviour's skill (default Team: goalie, defender, "
+                   "midfielder and striker by team communication)")
     for team in (0, 1):
         p.add_argument(f"--team{team}", metavar="LANG:SKILL",
                        help=f"team {team}'s behaviour, e.g. py:Team, cpp:Team, py:Striker "
