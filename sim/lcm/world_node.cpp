@@ -303,7 +303,8 @@ class WorldNode {
   }
 
   void publish_events() {
-    for (const sim::MatchEvent& event : match_.take_events()) {
+    const std::vector<sim::MatchEvent> events = match_.take_events();
+    for (const sim::MatchEvent& event : events) {
       match_event_t msg;
       msg.utime = event.utime;
       msg.kind = static_cast<int8_t>(event.kind);
@@ -312,9 +313,9 @@ class WorldNode {
       msg.text = event.text;
       if (event.kind == sim::MatchEvent::Kind::kStateChange || event.kind == sim::MatchEvent::Kind::kBallOut) msg.player = 0;
       publish(kEventChannel, msg);
-      publish_game_state(false); // the game changed: tell the robots and tools at once
       if (def_.progress) log_ << "sim_world: " << describe(event) << "\n" << std::flush;
     }
+    if (!events.empty()) publish_game_state(false); // the game changed: tell the robots and tools at once
   }
 
   static constexpr int kFramesPerSecond = 30;

@@ -59,26 +59,11 @@ std::string str(T value) {
   return out.str();
 }
 
-template <typename T>
-[[noreturn]] void fail(const char* key, const char* rule, T got) {
-  throw ConfigError(std::string(key) + " must be " + rule + " (got " + str(got) + ")");
-}
-
-// Written as !(ok) so that NaN fails too.
-void require_positive(const char* key, float value) {
-  if (!(value > 0)) fail(key, "> 0", value);
-}
-void require_non_negative(const char* key, float value) {
-  if (!(value >= 0)) fail(key, ">= 0", value);
-}
-void require_fraction(const char* key, float value) {
-  if (!(value >= 0 && value <= 1)) fail(key, "in [0, 1]", value);
-}
 void require_below(const char* key, float value, const std::string& limit_name, float limit) {
-  if (!(value < limit)) fail(key, ("< " + limit_name + " = " + str(limit)).c_str(), value);
+  if (!(value < limit)) config_fail(key, ("< " + limit_name + " = " + str(limit)).c_str(), value);
 }
 void require_at_most(const char* key, float value, const std::string& limit_name, float limit) {
-  if (!(value <= limit)) fail(key, ("<= " + limit_name + " = " + str(limit)).c_str(), value);
+  if (!(value <= limit)) config_fail(key, ("<= " + limit_name + " = " + str(limit)).c_str(), value);
 }
 
 void validate_field(const FieldDef& f) {
@@ -98,7 +83,7 @@ void validate_field(const FieldDef& f) {
 
   const float half_length = f.length_mm / 2;
   if (!(f.goal_width_mm + f.goal_post_diameter_mm < f.width_mm))
-    fail("field.goal_width_mm",  // the posts stand on the goal line, inside the touchlines
+    config_fail("field.goal_width_mm",  // the posts stand on the goal line, inside the touchlines
          ("< field.width_mm - goal_post_diameter_mm = " + str(f.width_mm - f.goal_post_diameter_mm))
              .c_str(),
          f.goal_width_mm);
@@ -127,14 +112,14 @@ void validate_physics(const PhysicsDef& p) {
   require_fraction("physics.wall_restitution", p.wall_restitution);
   require_fraction("physics.post_restitution", p.post_restitution);
   require_fraction("physics.net_restitution", p.net_restitution);
-  if (p.substeps < 1) fail("physics.substeps", ">= 1", p.substeps);
-  if (p.velocity_iterations < 1) fail("physics.velocity_iterations", ">= 1", p.velocity_iterations);
-  if (p.position_iterations < 1) fail("physics.position_iterations", ">= 1", p.position_iterations);
+  if (p.substeps < 1) config_fail("physics.substeps", ">= 1", p.substeps);
+  if (p.velocity_iterations < 1) config_fail("physics.velocity_iterations", ">= 1", p.velocity_iterations);
+  if (p.position_iterations < 1) config_fail("physics.position_iterations", ">= 1", p.position_iterations);
 }
 
 void validate_match(const MatchDef& m) {
   if (m.team_size < 1 || m.team_size > kMaxTeamSize)
-    fail("match.team_size", ("1.." + std::to_string(kMaxTeamSize)).c_str(), m.team_size);
+    config_fail("match.team_size", ("1.." + std::to_string(kMaxTeamSize)).c_str(), m.team_size);
   require_positive("match.duration_s", m.duration_s);
   require_positive("match.foot_separation_mm", m.foot_separation_mm);
 }

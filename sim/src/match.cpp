@@ -1,6 +1,7 @@
 #include "touchline/sim/match.hpp"
 
 #include "touchline/angles.hpp"
+#include "touchline/random.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -26,10 +27,6 @@ const char* state_name(GameState state) {
   }
   return "?";
 }
-
-/// Uniform in [0, 1) from the raw bits: std:: distributions differ between standard
-/// libraries, and a seed must give the same match everywhere.
-double uniform01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
 
 /// The camera's and the radio's streams are seeded apart from the falls', so one never
 /// shifts another.

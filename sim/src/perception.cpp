@@ -1,3 +1,4 @@
+#include "touchline/random.hpp"
 #include "touchline/sim/perception.hpp"
 
 #include <algorithm>
@@ -24,7 +25,7 @@ float wrap_if_needed(float a) { return (a >= -kPi && a < kPi) ? a : normalise_an
 Perception::Perception(const Field& field, const PerceptionDef& def, uint64_t seed)
     : field_(field), def_(def), landmarks_(field_landmarks(field_)), rng_(seed) {}
 
-double Perception::uniform() { return static_cast<double>(rng_() >> 11) * 0x1.0p-53; }
+double Perception::uniform() { return uniform01(rng_); }
 
 double Perception::gaussian() {
   const double u1 = 1.0 - uniform(); // (0, 1]: log is finite

@@ -32,33 +32,11 @@ void bind(IniSchema& s, PerceptionDef& d) {
       .bind("sonar.sees_goal_posts", &d.sonar_sees_goal_posts, "goal posts echo too, true/false");
 }
 
-namespace {
-
-template <typename T>
-[[noreturn]] void fail(const char* key, const std::string& rule, T got) {
-  std::ostringstream out;
-  out << key << " must be " << rule << " (got " << got << ")";
-  throw ConfigError(out.str());
-}
-
-// Written as !(ok) so that NaN fails too.
-void require_positive(const char* key, float value) {
-  if (!(value > 0)) fail(key, "> 0", value);
-}
-void require_non_negative(const char* key, float value) {
-  if (!(value >= 0)) fail(key, ">= 0", value);
-}
-void require_probability(const char* key, float value) {
-  if (!(value >= 0 && value <= 1)) fail(key, "in [0, 1]", value);
-}
-
-} // namespace
-
 void validate(const PerceptionDef& d) {
   if (!(d.camera.field_of_view_rad > 0 && d.camera.field_of_view_rad < kPi))
-    fail("camera.field_of_view_rad", "in (0, pi)", d.camera.field_of_view_rad);
+    config_fail("camera.field_of_view_rad", "in (0, pi)", d.camera.field_of_view_rad);
   if (!(d.camera.min_pitch_rad < d.camera.max_pitch_rad))
-    fail("camera.min_pitch_rad", "< camera.max_pitch_rad = " + std::to_string(d.camera.max_pitch_rad),
+    config_fail("camera.min_pitch_rad", "< camera.max_pitch_rad = " + std::to_string(d.camera.max_pitch_rad),
          d.camera.min_pitch_rad);
   require_positive("camera.near_range_mm", d.camera.near_range_mm);
   require_non_negative("camera.range_span_mm", d.camera.range_span_mm);
@@ -68,10 +46,10 @@ void validate(const PerceptionDef& d) {
   require_non_negative("noise.distance_sd_fraction", d.noise.distance_sd_fraction);
   require_non_negative("noise.bearing_sd_rad", d.noise.bearing_sd_rad);
   require_non_negative("noise.bearing_sd_rad_per_m", d.noise.bearing_sd_rad_per_m);
-  require_probability("noise.ball_miss_probability", d.noise.ball_miss_probability);
-  require_probability("noise.landmark_miss_probability", d.noise.landmark_miss_probability);
-  require_probability("noise.robot_miss_probability", d.noise.robot_miss_probability);
-  require_probability("noise.phantom_ball_probability", d.noise.phantom_ball_probability);
+  require_fraction("noise.ball_miss_probability", d.noise.ball_miss_probability);
+  require_fraction("noise.landmark_miss_probability", d.noise.landmark_miss_probability);
+  require_fraction("noise.robot_miss_probability", d.noise.robot_miss_probability);
+  require_fraction("noise.phantom_ball_probability", d.noise.phantom_ball_probability);
   require_positive("noise.phantom_ball_max_distance_mm", d.noise.phantom_ball_max_distance_mm);
 
   require_positive("sonar.range_mm", d.sonar.range_mm);

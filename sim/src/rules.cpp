@@ -28,32 +28,13 @@ void bind(IniSchema& s, RulesDef& d) {
       .bind("rules.ball_out_inset_mm", &d.ball_out_inset_mm, "inside the line crossed, mm");
 }
 
-namespace {
-
-template <typename T>
-[[noreturn]] void fail(const char* key, const char* rule, T got) {
-  std::ostringstream out;
-  out << key << " must be " << rule << " (got " << got << ")";
-  throw ConfigError(out.str());
-}
-
-// Written as !(ok) so that NaN fails too.
-void require_non_negative(const char* key, float value) {
-  if (!(value >= 0)) fail(key, ">= 0", value);
-}
-void require_positive(const char* key, float value) {
-  if (!(value > 0)) fail(key, "> 0", value);
-}
-
-} // namespace
-
 void validate(const RulesDef& d) {
   require_non_negative("rules.initial_s", d.initial_s);
   require_non_negative("rules.ready_s", d.ready_s);
   require_non_negative("rules.set_s", d.set_s);
   require_positive("rules.half_s", d.half_s);
   if (d.first_kickoff_team != 0 && d.first_kickoff_team != 1)
-    fail("rules.first_kickoff_team", "0 or 1", d.first_kickoff_team);
+    config_fail("rules.first_kickoff_team", "0 or 1", d.first_kickoff_team);
   require_non_negative("rules.removal_s", d.removal_s);
   require_positive("rules.contact_distance_mm", d.collision.contact_distance_mm);
   require_positive("rules.contest_distance_mm", d.collision.contest_distance_mm);
@@ -62,8 +43,7 @@ void validate(const RulesDef& d) {
   require_non_negative("rules.ball_out_setback_mm", d.ball_out_setback_mm);
   require_non_negative("rules.ball_out_inset_mm", d.ball_out_inset_mm);
   require_non_negative("rules.getup_s", d.getup_s);
-  if (!(d.fall_probability >= 0 && d.fall_probability <= 1))
-    throw ConfigError("rules.fall_probability must be 0..1 (got " + std::to_string(d.fall_probability) + ")");
+  require_fraction("rules.fall_probability", d.fall_probability);
 }
 
 } // namespace touchline::sim

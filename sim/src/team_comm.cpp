@@ -1,5 +1,7 @@
 #include "touchline/sim/team_comm.hpp"
 
+#include "touchline/random.hpp"
+
 #include <cmath>
 #include <string>
 
@@ -13,11 +15,10 @@ void bind(IniSchema& s, CommDef& d) {
 }
 
 void validate(const CommDef& d) {
-  if (d.max_bytes < 0) throw ConfigError("comm.max_bytes must be >= 0 (got " + std::to_string(d.max_bytes) + ")");
-  if (!(d.max_rate_hz > 0)) throw ConfigError("comm.max_rate_hz must be > 0 (got " + std::to_string(d.max_rate_hz) + ")");
-  if (!(d.latency_ms >= 0)) throw ConfigError("comm.latency_ms must be >= 0 (got " + std::to_string(d.latency_ms) + ")");
-  if (!(d.loss_probability >= 0 && d.loss_probability <= 1))
-    throw ConfigError("comm.loss_probability must be 0..1 (got " + std::to_string(d.loss_probability) + ")");
+  if (d.max_bytes < 0) config_fail("comm.max_bytes", ">= 0", d.max_bytes);
+  require_positive("comm.max_rate_hz", d.max_rate_hz);
+  require_non_negative("comm.latency_ms", d.latency_ms);
+  require_fraction("comm.loss_probability", d.loss_probability);
 }
 
 TeamComm::TeamComm(const CommDef& def, uint64_t seed) : def_(def), rng_(seed) {}
@@ -39,9 +40,7 @@ SendResult TeamComm::send(RobotId from, int64_t utime, const std::vector<uint8_t
   const int64_t arrives = utime + static_cast<int64_t>(std::llround(def_.latency_ms * 1000.0));
   for (RobotId to : team) {
     if (to == from || to.team != from.team) continue;
-    // Uniform from the raw bits: std:: distributions differ between standard libraries.
-    const double draw = static_cast<double>(rng_() >> 11) * 0x1.0p-53;
-    if (draw < def_.loss_probability) {
+    if (uniform01(rng_) < def_.loss_probability) {
       ++lost_;
       continue;
     }

@@ -1,6 +1,7 @@
 #pragma once
 // Reads INI files into definition structs: each field is bound to "section.key" with its
 // default and a description, unknown keys and bad values are one-line errors.
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -12,6 +13,25 @@ namespace touchline {
 struct ConfigError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+/// Throws ConfigError "<key> must be <rule> (got <value>)": what every validate() says.
+template <typename T>
+[[noreturn]] void config_fail(const char* key, const std::string& rule, T got) {
+  std::ostringstream out;
+  out << key << " must be " << rule << " (got " << got << ")";
+  throw ConfigError(out.str());
+}
+
+// Range checks for validate() functions, written as !(ok) so that NaN fails too.
+inline void require_positive(const char* key, float value) {
+  if (!(value > 0)) config_fail(key, "> 0", value);
+}
+inline void require_non_negative(const char* key, float value) {
+  if (!(value >= 0)) config_fail(key, ">= 0", value);
+}
+inline void require_fraction(const char* key, float value) {
+  if (!(value >= 0 && value <= 1)) config_fail(key, "in [0, 1]", value);
+}
 
 class IniSchema {
  public:
