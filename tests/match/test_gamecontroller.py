@@ -24,7 +24,9 @@ def gc_packet(state: int, score: tuple, penalised_team1: tuple = ()) -> bytes:
 
 def test_the_gamecontroller_decides_the_game(tmp_path):
     log = tmp_path / "gc.lcmlog"
-    match = start_world(tmp_path, 2, 4.0, "--gamecontroller", f"127.0.0.1:{GC_PORT}", "--log", log)
+    # Paced to the wall clock: in lockstep the match could end before the packet arrives.
+    match = start_world(tmp_path, 2, 4.0, "--gamecontroller", f"127.0.0.1:{GC_PORT}", "--log", log,
+                        "--mode", "realtime")
     start_robot(match, 0, 1, "walk", forward=200)
     start_robot(match, 1, 1, "walk", forward=200)
     match.world.wait_for_line("taking the game from GameController packets")

@@ -88,7 +88,8 @@ def test_eight_robots_all_answer_every_frame(tmp_path):
 
 
 def test_a_killed_shim_is_reported_and_the_match_goes_on_and_it_may_rejoin(tmp_path, truth):
-    match = start_world(tmp_path, 2, 8.0, "--robot-timeout-ms", "300")
+    # Paced at 2x the wall clock: in lockstep the match could end before the kill lands.
+    match = start_world(tmp_path, 2, 8.0, "--robot-timeout-ms", "300", "--mode", "realtime", "--speed", "2")
     start_robot(match, 0, 1, "walk", forward=100)
     victim = start_robot(match, 0, 2, "walk", forward=100)
     truth.wait_for_frame(30)
@@ -109,7 +110,8 @@ def test_a_killed_shim_is_reported_and_the_match_goes_on_and_it_may_rejoin(tmp_p
 
 
 def test_second_shim_claiming_a_robot_is_refused(tmp_path):
-    match = start_world(tmp_path, 1, 3.0)
+    # Paced to the wall clock: a lockstep match of 3 s could end before the intruder's join.
+    match = start_world(tmp_path, 1, 3.0, "--mode", "realtime")
     start_robot(match, 1, 3)
     match.world.wait_for_line("kick-off")
     intruder = start_robot(match, 1, 3)
@@ -144,7 +146,8 @@ def test_malformed_messages_are_reported_and_ignored(tmp_path):
     import lcm
     from touchline import act_t
 
-    match = start_world(tmp_path, 1, 3.0)
+    # Paced to the wall clock: a lockstep match of 3 s could end before the garbage arrives.
+    match = start_world(tmp_path, 1, 3.0, "--mode", "realtime")
     start_robot(match, 0, 1, "walk", forward=100)
     match.world.wait_for_line("kick-off")
     bus = lcm.LCM(LCM_URL)

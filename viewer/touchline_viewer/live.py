@@ -10,6 +10,7 @@ from .errors import ViewerError
 
 DEFAULT_LCM_URL = "udpm://239.255.76.67:7667?ttl=0"
 SEND_PERIOD_S = 1 / 30
+RECENT_GAMES = 8  # game states kept to pick the one current at the truth's time (they come at 1 Hz)
 
 
 class LiveSource:
@@ -24,7 +25,8 @@ class LiveSource:
             raise ViewerError(f"cannot open LCM at {url}: {e}{hint}") from None
         for channel in CHANNELS:
             self.lc.subscribe(channel, self._on_message)
-        self.truth = self.sense = self.game = None  # sense: the TL_SENSE of the truth's frame
+        self.truth = self.sense = None  # sense: the TL_SENSE of the truth's frame
+        self.games: deque = deque(maxlen=RECENT_GAMES)
         self._latest_sense = None
         self.statuses: dict = {}
         self.events: deque = deque(maxlen=RECENT_EVENTS)
@@ -46,8 +48,13 @@ class LiveSource:
     def hello(self) -> dict:
         return {"mode": "live", "source": self.url}
 
+    def game(self):
+        """The game as of the truth's time, as the replay pairs them: a newer state may
+        already have arrived ahead of its frame's truth."""
+        return next((g for g in reversed(self.games) if g["utime"] <= self.truth["utime"]), None)
+
     def frame(self) -> dict:
-        return {"truth": self.truth, "sense": self.sense, "game": self.game,
+        return {"truth": self.truth, "sense": self.sense, "game": self.game(),
                 "status": [self.statuses[k] for k in sorted(self.statuses)], "events": list(self.events),
                 "ack": None}
 
@@ -66,7 +73,7 @@ class LiveSource:
         elif channel == EVENT:
             self.events.append(message)
         elif channel == GAME:
-            self.game = message
+            self.games.append(message)
         elif channel == STATUS:
             self.statuses[(message["team"], message["player"])] = message
         self.version += 1
