@@ -132,7 +132,7 @@ class WorldNode {
         if (packet->penalties[static_cast<size_t>(team)][static_cast<size_t>(player - 1)].penalised)
           penalised.insert({team, player});
     if (match_.game().state != packet->game.state || !gamecontroller_seen_)
-      log_ << "sim_world: GameController says " << kStateNames[static_cast<int>(packet->game.state)]
+      log_ << "sim_world: GameController says " << to_string(packet->game.state)
            << " (packet " << packet->packet_number << ")\n" << std::flush;
     gamecontroller_seen_ = true;
     match_.set_external_game(packet->game, penalised);
@@ -319,7 +319,6 @@ class WorldNode {
   }
 
   static constexpr int kFramesPerSecond = 30;
-  static constexpr const char* kStateNames[] = {"INITIAL", "READY", "SET", "PLAYING", "FINISHED"};
   static constexpr int64_t kMaxMalformedReports = 20;
 
   sim::Match& match_;

@@ -17,17 +17,6 @@ constexpr size_t kMaxPendingTicks = 2 * kMaxTicksPerFrame;
 
 namespace {
 
-const char* state_name(GameState state) {
-  switch (state) {
-    case GameState::kInitial: return "INITIAL";
-    case GameState::kReady: return "READY";
-    case GameState::kSet: return "SET";
-    case GameState::kPlaying: return "PLAYING";
-    case GameState::kFinished: return "FINISHED";
-  }
-  return "?";
-}
-
 /// The camera's and the radio's streams are seeded apart from the falls', so one never
 /// shifts another.
 constexpr uint64_t kPerceptionSeedSalt = 0x9e3779b97f4a7c15ull;
@@ -212,7 +201,7 @@ void Match::judge() {
 
 void Match::carry_out(const RefereeDecision& d) {
   for (const StateChange& change : d.state_changes)
-    events_.push_back({change.utime, MatchEvent::Kind::kStateChange, {}, -1, state_name(change.to)});
+    events_.push_back({change.utime, MatchEvent::Kind::kStateChange, {}, -1, to_string(change.to)});
   for (const GoalScored& goal : d.goals)
     events_.push_back({goal.utime, MatchEvent::Kind::kGoal, {}, goal.team, "goal for team " + std::to_string(goal.team)});
   for (const Penalty& penalty : d.penalties) {

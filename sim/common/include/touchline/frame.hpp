@@ -57,6 +57,18 @@ constexpr int64_t frame_start_utime(int64_t frame) {
 /// Game states, as the GameController sends them.
 enum class GameState : int8_t { kInitial = 0, kReady = 1, kSet = 2, kPlaying = 3, kFinished = 4 };
 
+/// "INITIAL", "READY", ...: the GameController's names.
+inline const char* to_string(GameState state) {
+  switch (state) {
+    case GameState::kInitial: return "INITIAL";
+    case GameState::kReady: return "READY";
+    case GameState::kSet: return "SET";
+    case GameState::kPlaying: return "PLAYING";
+    case GameState::kFinished: return "FINISHED";
+  }
+  return "?";
+}
+
 /// What the camera can report. Landmark ids: goal posts 0..3 (team 0's goal left, right
 /// as seen from the field centre, then team 1's), field corners 0..3 (counter-clockwise
 /// from (-x, -y)), centre-line ends 0 (-y) and 1 (+y), penalty marks 0 (team 0's) and 1.
