@@ -13,6 +13,7 @@ import argparse
 import datetime
 import json
 import os
+import shutil
 import signal
 import subprocess
 import sys
@@ -152,6 +153,8 @@ class Launcher:
             self.stop_all()
         if log and log.exists():
             print(f"launch: match log {log} ({log.stat().st_size / 1e6:.1f} MB)")
+        if rc == 0:  # the processes' own logs are kept only to explain a failure
+            shutil.rmtree(self.logdir, ignore_errors=True)
         return rc
 
     def play(self, bin_world: Path, bin_shim: Path, watch: MatchWatch, log: Path | None) -> int:
@@ -193,8 +196,12 @@ class Launcher:
                 print(f"launch: stopping the match: {why}", file=sys.stderr)
                 return 1
             time.sleep(0.1)  # polling child exit codes, not hiding a race
-        for _, proc, _ in self.procs:  # the shims end when the world says FINISHED
-            proc.wait(timeout=30)
+        for name, proc, _ in self.procs:  # the shims end when the world says FINISHED
+            try:
+                proc.wait(timeout=30)
+            except subprocess.TimeoutExpired:
+                print(f"launch: {name} did not exit after the match (logs in {self.logdir})", file=sys.stderr)
+                return 1
         why = self.failure()
         if why:
             print(f"launch: {why}", file=sys.stderr)
