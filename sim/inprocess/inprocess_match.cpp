@@ -9,10 +9,12 @@ constexpr int64_t kInstance = 1; // one process: every robot is its own only cla
 }
 
 robot::Robot& InProcessMatch::add_robot(RobotId id, const robot::WalkDef& walk,
-                                        std::unique_ptr<api::Behaviour> behaviour) {
+                                        std::unique_ptr<api::Behaviour> behaviour,
+                                        const robot::LocalisationModeDef& localisation) {
   const sim::JoinReply reply = match_.join(id, kInstance + static_cast<int64_t>(robots_.size()), 0);
   if (!reply.accepted) throw std::invalid_argument(reply.reason);
-  robots_.push_back(std::make_unique<robot::Robot>(id, walk, std::move(behaviour)));
+  robots_.push_back(std::make_unique<robot::Robot>(id, walk, std::move(behaviour), robot::BehaviourTimingDef{},
+                                                    robot::KickDef{}, localisation));
   return *robots_.back();
 }
 
@@ -32,7 +34,11 @@ void InProcessMatch::run_to_end() {
 }
 
 robot::Robot& InProcessMatch::robot(RobotId id) {
-  for (auto& robot : robots_)
+  return const_cast<robot::Robot&>(static_cast<const InProcessMatch&>(*this).robot(id));
+}
+
+const robot::Robot& InProcessMatch::robot(RobotId id) const {
+  for (const auto& robot : robots_)
     if (robot->id() == id) return *robot;
   throw std::out_of_range("no robot " + std::to_string(id.team) + "/" + std::to_string(id.player));
 }

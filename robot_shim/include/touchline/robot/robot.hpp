@@ -61,6 +61,7 @@ class Robot {
 
   RobotId id() const { return id_; }
   const api::Blackboard& blackboard() const { return blackboard_; }
+  const MotionAdapter& motion() const { return motion_; }
   /// CPU time of the last behaviour tick, microseconds (thread CPU clock).
   int64_t behaviour_cpu_us() const { return behaviour_adapter_.last_cpu_us(); }
   const BehaviourStats& behaviour_stats() const { return stats_; }

@@ -15,7 +15,8 @@ class InProcessMatch {
   explicit InProcessMatch(const sim::WorldConfig& config, uint64_t seed = 1) : match_(config, seed) {}
 
   /// Adds a robot before start(). Throws std::invalid_argument if the roster refuses it.
-  robot::Robot& add_robot(RobotId id, const robot::WalkDef& walk, std::unique_ptr<api::Behaviour> behaviour);
+  robot::Robot& add_robot(RobotId id, const robot::WalkDef& walk, std::unique_ptr<api::Behaviour> behaviour,
+                          const robot::LocalisationModeDef& localisation = {});
   void start() { match_.start(); }
   /// One camera frame: every robot senses, answers, and the world steps.
   void step_frame();
@@ -25,6 +26,7 @@ class InProcessMatch {
   sim::Match& match() { return match_; }
   const sim::Match& match() const { return match_; }
   robot::Robot& robot(RobotId id);
+  const robot::Robot& robot(RobotId id) const;
 
  private:
   sim::Match match_;
