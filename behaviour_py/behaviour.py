@@ -2,7 +2,9 @@
 
 robot.params (strings, set by the shim) picks the body skill with "skill" (default
 GoToBall) and gives its parameters ("Team" plays a match: roles from team messages;
-"Goalie", "Striker", "Midfielder", "Defender" play that one role in a match); the head runs LookForBall (TrackBall while the ball was
+"Goalie", "Striker", "Midfielder", "Defender" play that one role in a match; "walker=learned"
+makes the skills that walk to the ball use the learned policy "policy", data-relative,
+default policies/go_to_pose.policy); the head runs LookForBall (TrackBall while the ball was
 seen recently, else HeadScan); the chest LED says whether the ball is seen. The C++ port is
 behaviour_cpp/src/registry.cpp (same skill names and parameters) and skills/skill_behaviour.
 """
@@ -15,16 +17,20 @@ from skills.ball import BEHIND_BALL_DIST, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, ball
 from skills.go_to_ball import GoToBall
 from skills.go_to_pose import GoToPose
 from skills.head_scan import HeadScan
+from skills.learned_go_to_pose import LearnedGoToPose
 from skills.line_up_and_kick import DRIBBLE_POWER, KICK_POWER, LineUpAndKick
 from skills.look_for_ball import LookForBall
 from skills.stand import Stand
 from skills.team import Team
 from skills.team_comm import ROLE_DEFENDER, ROLE_GOALIE, ROLE_MIDFIELDER, ROLE_STRIKER
+from skills.tile_policy import DEFAULT_POLICY
 from skills.track_ball import TrackBall
 
 DEFAULT_SKILL = "GoToBall"
 BALL_SEEN_CHEST = 0x00ff00   # green: the ball was seen recently
 BALL_LOST_CHEST = 0xff0000   # red: searching
+WALKER_HAND = "hand"         # walker=hand: GoToPose walks to the ball (the default)
+WALKER_LEARNED = "learned"   # walker=learned: LearnedGoToPose with the policy file "policy"
 
 
 class BehaviourError(ValueError):
@@ -71,6 +77,24 @@ class ParamReader:
     def flag(self, key):
         return self.number(key, 0.0) != 0.0
 
+    def text(self, key, fallback):
+        self.known.add(key)
+        return self.params.get(key, fallback)
+
+    def walker(self):
+        """The policy file the learned walker uses (walker=learned; policy=..., data-relative),
+        or None for GoToPose (walker=hand, the default)."""
+        walker = self.text("walker", WALKER_HAND)
+        if walker not in (WALKER_HAND, WALKER_LEARNED):
+            raise BehaviourError("%s: parameter walker must be %s or %s (got '%s')"
+                                 % (self.skill, WALKER_HAND, WALKER_LEARNED, walker))
+        policy = self.text("policy", None)
+        if walker == WALKER_HAND:
+            if policy is not None:
+                raise BehaviourError("%s: parameter policy needs walker=%s" % (self.skill, WALKER_LEARNED))
+            return None
+        return DEFAULT_POLICY if policy is None else policy
+
     def rejectUnknown(self):
         for key in sorted(self.params):
             if key not in self.known:
@@ -81,35 +105,42 @@ def makeGoToPose(p):
     return GoToPose(p.number("x", 0.0), p.number("y", 0.0), p.number("theta", 0.0), p.flag("face_ball"))
 
 
+def makeLearnedGoToPose(p):
+    return LearnedGoToPose(p.number("x", 0.0), p.number("y", 0.0), p.number("theta", 0.0),
+                           p.text("policy", DEFAULT_POLICY))
+
+
 def makeGoToBall(p):
     goalX = p.number("goal_x", OPPONENT_GOAL_X)
     goalY = p.number("goal_y", OPPONENT_GOAL_Y)
-    return GoToBall(goalX, goalY, p.number("behind", BEHIND_BALL_DIST))
+    return GoToBall(goalX, goalY, p.number("behind", BEHIND_BALL_DIST), p.walker())
 
 
 def makeLineUpAndKick(p):
     goalX = p.number("goal_x", OPPONENT_GOAL_X)
     goalY = p.number("goal_y", OPPONENT_GOAL_Y)
     dribble = p.flag("dribble")
-    return LineUpAndKick(goalX, goalY, dribble, p.number("power", DRIBBLE_POWER if dribble else KICK_POWER))
+    power = p.number("power", DRIBBLE_POWER if dribble else KICK_POWER)
+    return LineUpAndKick(goalX, goalY, dribble, power, p.walker())
 
 
 # Skill name -> (body skill factory, head skill factory); a head factory None: the body
 # factory makes the whole behaviour (the team and its roles: head, LEDs, messages, game
 # states). Names match the C++ registry.
-SKILL_NAMES = ("GoToPose", "GoToBall", "LineUpAndKick", "TrackBall", "HeadScan", "Team", "Goalie", "Striker",
-               "Midfielder", "Defender")
+SKILL_NAMES = ("GoToPose", "LearnedGoToPose", "GoToBall", "LineUpAndKick", "TrackBall", "HeadScan", "Team", "Goalie",
+               "Striker", "Midfielder", "Defender")
 SKILLS = {
     "GoToPose": (makeGoToPose, LookForBall),
+    "LearnedGoToPose": (makeLearnedGoToPose, LookForBall),
     "GoToBall": (makeGoToBall, LookForBall),
     "LineUpAndKick": (makeLineUpAndKick, LookForBall),
     "TrackBall": (lambda p: Stand(), TrackBall),
     "HeadScan": (lambda p: Stand(), HeadScan),
-    "Team": (lambda p: Team(), None),
-    "Goalie": (lambda p: Team(ROLE_GOALIE), None),
-    "Striker": (lambda p: Team(ROLE_STRIKER), None),
-    "Midfielder": (lambda p: Team(ROLE_MIDFIELDER), None),
-    "Defender": (lambda p: Team(ROLE_DEFENDER), None),
+    "Team": (lambda p: Team(policy=p.walker()), None),
+    "Goalie": (lambda p: Team(ROLE_GOALIE, p.walker()), None),
+    "Striker": (lambda p: Team(ROLE_STRIKER, p.walker()), None),
+    "Midfielder": (lambda p: Team(ROLE_MIDFIELDER, p.walker()), None),
+    "Defender": (lambda p: Team(ROLE_DEFENDER, p.walker()), None),
 }
 
 

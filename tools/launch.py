@@ -43,11 +43,13 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     p.add_argument("--skill", default="Team", help="the Python behaviour's skill (default Team: goalie, defender, "
                    "midfielder and striker by team communication)")
     for team in (0, 1):
-        p.add_argument(f"--team{team}", metavar="LANG:SKILL",
-                       help=f"team {team}'s behaviour, e.g. py:Team, cpp:Team, py:Striker "
-                            "(default: --behaviour/--skill)")
+        p.add_argument(f"--team{team}", metavar="LANG:SKILL[,KEY=VALUE...]",
+                       help=f"team {team}'s behaviour, e.g. py:Team, cpp:Team, py:Striker, with the skill's "
+                            "parameters after commas, e.g. cpp:Team,walker=learned (default: --behaviour/--skill)")
     p.add_argument("--config", type=Path, default=ROOT / "config" / "spl2011.ini", help="world config")
     p.add_argument("--walk-config", type=Path, default=ROOT / "config" / "walk.ini", help="walk config")
+    p.add_argument("--data-dir", type=Path, help="the robots' data directory (learned policies; default: "
+                   "robot_shim's, the source tree's config/)")
     p.add_argument("--mode", choices=["lockstep", "realtime", "free"], default="lockstep")
     p.add_argument("--speed", type=float, default=1.0, help="real-time multiple for realtime/free")
     p.add_argument("--seed", type=int, default=1)
@@ -66,11 +68,26 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
         p.error("--team-size must be 1..7")
     for team in (0, 1):
         spec = getattr(args, f"team{team}")
-        if spec is not None and (spec.count(":") != 1 or spec.split(":")[0] not in ("py", "cpp") or not spec.split(":")[1]):
-            p.error(f"--team{team} must be py:SKILL or cpp:SKILL (got '{spec}')")
+        if spec is not None and team_behaviour(spec) is None:
+            p.error(f"--team{team} must be py:SKILL or cpp:SKILL, then any ,KEY=VALUE (got '{spec}')")
     if args.duration is not None and args.duration <= 0:
         p.error("--duration must be > 0")
     return args
+
+
+def team_behaviour(spec: str) -> list | None:
+    """robot_shim's behaviour options for a --team spec (LANG:SKILL[,KEY=VALUE...]), or
+    None if it is malformed."""
+    head, *assignments = spec.split(",")
+    language, _, skill = head.partition(":")
+    if language not in ("py", "cpp") or not skill or ":" in skill:
+        return None
+    if any("=" not in a or a.startswith("=") for a in assignments):
+        return None
+    params = [arg for a in assignments for arg in ("--param", a)]
+    if language == "py":
+        return ["--behaviour", "py", "--param", f"skill={skill}", *params]
+    return ["--behaviour", skill, *params]
 
 
 def kickoff_targets(team_size: int, half_length: float, half_width: float) -> list:
@@ -170,9 +187,7 @@ class Launcher:
         for team, player, x, y, theta in targets:
             spec = getattr(a, f"team{team}")
             if spec:
-                language, skill = spec.split(":")
-                behaviour = (["--behaviour", "py", "--param", f"skill={skill}"] if language == "py"
-                             else ["--behaviour", skill])
+                behaviour = team_behaviour(spec)
             elif a.behaviour == "goto":
                 behaviour = ["--behaviour", "goto", "--param", f"x={x:.0f}", "--param", f"y={y:.0f}",
                              "--param", f"theta={theta:.3f}"]
@@ -180,7 +195,8 @@ class Launcher:
                 behaviour = ["--behaviour", "py", "--param", f"skill={a.skill}"]
             self.start(f"robot_shim {team}/{player}",
                        [bin_shim, "--team", team, "--player", player, "--walk-config", a.walk_config,
-                        "--field-config", a.config, "--lcm-url", a.lcm_url, *behaviour])
+                        "--field-config", a.config, "--lcm-url", a.lcm_url,
+                        *(["--data-dir", a.data_dir] if a.data_dir else []), *behaviour])
         length = f"{a.duration:.0f} s simulated" if a.duration else "two halves"
         what = a.skill if a.behaviour == "py" else "goto kick-off spots"
         if a.team0 or a.team1:

@@ -7,6 +7,12 @@ Each scenario is a short match in a private network namespace: sim_world records
 message (--log) and the robots run the Python behaviour with --snapshot-every 1; the
 snapshots of all scenarios are then gathered in scenario order. Rerun this after
 changing what the Blackboard holds or what the skills read, then rerun the tests.
+
+The learned-walker scenarios (walker=learned, LearnedGoToPose) read the go-to-pose policy
+from --data-dir (default config/, where the trained policy lives); --synthetic-policy
+records them with tools/synthetic_policy.py's stand-in instead, from a temporary data
+directory. test_port_regression replays them with whatever policy it is given: any policy
+tests that both ports pick the same actions.
 """
 from __future__ import annotations
 
@@ -40,10 +46,14 @@ SCENARIOS = [
     ({"skill": "Goalie"}, (-2200, 300), 16, THREE, QUICK_KICKOFF),
     ({"skill": "Midfielder"}, (1600, -700), 16, THREE, QUICK_KICKOFF),
     ({"skill": "Defender"}, (-1000, 500), 16, THREE, QUICK_KICKOFF),
+    ({"skill": "LearnedGoToPose", "x": "-1500", "y": "300", "theta": "0.7"}, (0, 0), 10, THREE, []),
+    ({"skill": "GoToBall", "walker": "learned"}, (-1200, 900), 12, THREE, []),
+    ({"skill": "Striker", "walker": "learned"}, (800, 400), 16, THREE, QUICK_KICKOFF),
 ]
+POLICY = Path("policies") / "go_to_pose.policy"  # what the learned scenarios read, data-relative
 
 
-def run_scenario(build: Path, params: dict, ball: tuple, seconds: float, robots: list, sets: list,
+def run_scenario(build: Path, data_dir: Path, params: dict, ball: tuple, seconds: float, robots: list, sets: list,
                  log: Path) -> None:
     overrides = [f"match.ball_start_x_mm={ball[0]}", f"match.ball_start_y_mm={ball[1]}", *sets]
     world = subprocess.Popen([build / "sim" / "sim_world", "--robots", str(len(robots)), "--duration", str(seconds),
@@ -53,7 +63,7 @@ def run_scenario(build: Path, params: dict, ball: tuple, seconds: float, robots:
     shims = []
     for team, player in robots:
         args = [build / "robot_shim" / "robot_shim", "--team", str(team), "--player", str(player), "--behaviour", "py",
-                "--lcm-url", LCM_URL, "--snapshot-every", "1"]
+                "--lcm-url", LCM_URL, "--snapshot-every", "1", "--data-dir", data_dir]
         for key, value in params.items():
             args += ["--param", f"{key}={value}"]
         shims.append(subprocess.Popen(args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True))
@@ -67,23 +77,39 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--build-dir", type=Path, default=ROOT / "build")
     parser.add_argument("--out", type=Path, default=ROOT / "tests" / "data" / "port_corpus.lcmlog")
+    parser.add_argument("--data-dir", type=Path, default=ROOT / "config",
+                        help="the robots' data directory, holding %s (default config/)" % POLICY)
+    parser.add_argument("--synthetic-policy", action="store_true",
+                        help="record the learned scenarios with tools/synthetic_policy.py's policy (from a "
+                             "temporary data directory) instead of --data-dir's")
     args = parser.parse_args()
+    if not args.synthetic_policy and not (args.data_dir / POLICY).is_file():
+        parser.error(f"no policy at {args.data_dir / POLICY} for the learned scenarios "
+                     "(train one, or record with --synthetic-policy)")
     if os.environ.get("TOUCHLINE_IN_NETNS") != "1":
         return subprocess.call([str(ROOT / "tools" / "netns"), sys.executable, __file__, *sys.argv[1:]])
     import lcm
 
     count = 0
     with tempfile.TemporaryDirectory() as tmp:
+        data_dir = args.data_dir
+        if args.synthetic_policy:
+            sys.path.insert(0, str(ROOT / "tools"))
+            from synthetic_policy import write_policy
+
+            data_dir = Path(tmp) / "data"
+            write_policy(data_dir / POLICY)
         out = lcm.EventLog(str(args.out), "w", overwrite=True)
         for index, (params, ball, seconds, robots, sets) in enumerate(SCENARIOS):
             log = Path(tmp) / f"scenario{index}.lcmlog"
-            run_scenario(args.build_dir, params, ball, seconds, robots, sets, log)
+            run_scenario(args.build_dir, data_dir, params, ball, seconds, robots, sets, log)
             for event in lcm.EventLog(str(log), "r"):
                 if event.channel.startswith("TL_BLACKBOARD_"):
                     out.write_event(event.timestamp, event.channel, event.data)
                     count += 1
         out.close()
-    print(f"record_corpus: {count} snapshots from {len(SCENARIOS)} scenarios in {args.out}")
+    policy = "the synthetic policy" if args.synthetic_policy else data_dir / POLICY
+    print(f"record_corpus: {count} snapshots from {len(SCENARIOS)} scenarios in {args.out} (learned walker: {policy})")
     return 0
 
 

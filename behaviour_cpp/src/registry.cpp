@@ -3,12 +3,15 @@
 #include <cmath>
 #include <cstdlib>
 #include <functional>
+#include <optional>
 #include <set>
+#include <string>
 #include <utility>
 
 #include "touchline/behaviour/skills/go_to_ball.hpp"
 #include "touchline/behaviour/skills/go_to_pose.hpp"
 #include "touchline/behaviour/skills/head_scan.hpp"
+#include "touchline/behaviour/skills/learned_go_to_pose.hpp"
 #include "touchline/behaviour/skills/line_up_and_kick.hpp"
 #include "touchline/behaviour/skills/look_for_ball.hpp"
 #include "touchline/behaviour/skills/skill_behaviour.hpp"
@@ -20,6 +23,9 @@
 namespace touchline::behaviour {
 
 namespace {
+
+constexpr const char* WALKER_HAND = "hand";       ///< walker=hand: GoToPose walks to the ball (the default)
+constexpr const char* WALKER_LEARNED = "learned"; ///< walker=learned: LearnedGoToPose with the policy file "policy"
 
 /// Reads numeric parameters, rejecting unknown keys and malformed numbers.
 class ParamReader {
@@ -37,8 +43,43 @@ class ParamReader {
     return value;
   }
 
+  /// A number in double, as Python reads it (float(text)): for the learned walker's target,
+  /// which must be the same bits in both ports.
+  double real(const std::string& key, double fallback) {
+    known_.insert(key);
+    const auto it = params_.find(key);
+    if (it == params_.end()) return fallback;
+    char* end = nullptr;
+    const double value = std::strtod(it->second.c_str(), &end);
+    if (it->second.empty() || *end != '\0' || !std::isfinite(value))
+      throw BehaviourError(behaviour_ + ": parameter " + key + " must be a number (got '" + it->second + "')");
+    return value;
+  }
+
   /// A number read as a switch: nonzero is on (as behaviour.py's ParamReader.flag).
   bool flag(const std::string& key) { return number(key, 0) != 0; }
+
+  std::optional<std::string> text(const std::string& key) {
+    known_.insert(key);
+    const auto it = params_.find(key);
+    if (it == params_.end()) return std::nullopt;
+    return it->second;
+  }
+
+  /// The policy file the learned walker uses (walker=learned; policy=..., data-relative), or
+  /// nullopt for GoToPose (walker=hand, the default).
+  std::optional<std::string> walker() {
+    const std::string walker = text("walker").value_or(WALKER_HAND);
+    if (walker != WALKER_HAND && walker != WALKER_LEARNED)
+      throw BehaviourError(behaviour_ + ": parameter walker must be " + WALKER_HAND + " or " + WALKER_LEARNED +
+                           " (got '" + walker + "')");
+    const std::optional<std::string> policy = text("policy");
+    if (walker == WALKER_HAND) {
+      if (policy) throw BehaviourError(behaviour_ + ": parameter policy needs walker=" + WALKER_LEARNED);
+      return std::nullopt;
+    }
+    return policy.value_or(skills::DEFAULT_POLICY);
+  }
 
   void reject_unknown() const {
     for (const auto& [key, value] : params_)
@@ -59,11 +100,14 @@ std::unique_ptr<api::Behaviour> with_head(std::unique_ptr<api::Behaviour> body) 
 
 struct Entry {
   const char* name;
-  const char* help;
+  std::string help;
   std::function<std::unique_ptr<api::Behaviour>(ParamReader&)> make;
 };
 
 const std::vector<Entry>& entries() {
+  static const std::string walkerHelp =
+      "walker (hand: GoToPose walks to the ball; learned: the learned policy does), policy (with walker=learned: its "
+      "file in the data directory, default policies/go_to_pose.policy)";
   static const std::vector<Entry> all = {
       {"stand", "stands still", [](ParamReader&) { return std::make_unique<Stand>(); }},
       {"walk", "walks at a constant velocity: forward (mm/s), left (mm/s), turn (rad/s)",
@@ -84,36 +128,48 @@ const std::vector<Entry>& entries() {
          const float x = p.number("x", 0), y = p.number("y", 0), theta = p.number("theta", 0);
          return with_head(std::make_unique<skills::GoToPose>(x, y, theta, p.flag("face_ball")));
        }},
-      {"GoToBall", "walks behind the ball facing the goal: goal_x (mm), goal_y (mm), behind (mm)",
+      {"LearnedGoToPose",
+       "walks to a field pose with a learned policy, head looking for the ball: x (mm), y (mm), theta (rad), "
+       "policy (file in the data directory, default policies/go_to_pose.policy)",
+       [](ParamReader& p) {
+         const double x = p.real("x", 0), y = p.real("y", 0), theta = p.real("theta", 0);
+         const std::string policy = p.text("policy").value_or(skills::DEFAULT_POLICY);
+         return with_head(std::make_unique<skills::LearnedGoToPose>(x, y, theta, policy));
+       }},
+      {"GoToBall",
+       std::string("walks behind the ball facing the goal: goal_x (mm), goal_y (mm), behind (mm), ") + walkerHelp,
        [](ParamReader& p) {
          const float goalX = p.number("goal_x", skills::OPPONENT_GOAL_X);
          const float goalY = p.number("goal_y", skills::OPPONENT_GOAL_Y);
-         return with_head(std::make_unique<skills::GoToBall>(goalX, goalY, p.number("behind", skills::BEHIND_BALL_DIST)));
+         const float behind = p.number("behind", skills::BEHIND_BALL_DIST);
+         return with_head(std::make_unique<skills::GoToBall>(goalX, goalY, behind, p.walker()));
        }},
       {"LineUpAndKick",
-       "approaches the ball, lines up and kicks at the goal: goal_x (mm), goal_y (mm), dribble (1: dribble), "
-       "power (0..1)",
+       std::string("approaches the ball, lines up and kicks at the goal: goal_x (mm), goal_y (mm), dribble (1: "
+                   "dribble), power (0..1), ") + walkerHelp,
        [](ParamReader& p) {
          const float goalX = p.number("goal_x", skills::OPPONENT_GOAL_X);
          const float goalY = p.number("goal_y", skills::OPPONENT_GOAL_Y);
          const bool dribble = p.flag("dribble");
          const float power = p.number("power", dribble ? skills::DRIBBLE_POWER : skills::KICK_POWER);
-         return with_head(std::make_unique<skills::LineUpAndKick>(goalX, goalY, dribble, power));
+         return with_head(std::make_unique<skills::LineUpAndKick>(goalX, goalY, dribble, power, p.walker()));
        }},
       {"TrackBall", "stands, head pointed at the ball",
        [](ParamReader&) { return with_head<skills::TrackBall>(std::make_unique<skills::Stand>()); }},
       {"HeadScan", "stands, head sweeping side to side",
        [](ParamReader&) { return with_head<skills::HeadScan>(std::make_unique<skills::Stand>()); }},
       // The team and its roles: whole behaviours (head, LEDs, team messages, game states).
-      {"Team", "plays a match: roles (goalie, striker, defender, midfielder) from team messages",
-       [](ParamReader&) { return std::make_unique<skills::Team>(); }},
-      {"Goalie", "plays a match as goalie", [](ParamReader&) { return std::make_unique<skills::Team>(skills::ROLE_GOALIE); }},
-      {"Striker", "plays a match as striker",
-       [](ParamReader&) { return std::make_unique<skills::Team>(skills::ROLE_STRIKER); }},
-      {"Midfielder", "plays a match as midfielder (thesis Algorithm 4.1)",
-       [](ParamReader&) { return std::make_unique<skills::Team>(skills::ROLE_MIDFIELDER); }},
-      {"Defender", "plays a match as defender (thesis Algorithm 4.2)",
-       [](ParamReader&) { return std::make_unique<skills::Team>(skills::ROLE_DEFENDER); }},
+      // walker=learned: the striker walks to the ball with the learned policy.
+      {"Team", std::string("plays a match: roles (goalie, striker, defender, midfielder) from team messages; ") + walkerHelp,
+       [](ParamReader& p) { return std::make_unique<skills::Team>(skills::ROLE_NONE, p.walker()); }},
+      {"Goalie", std::string("plays a match as goalie; ") + walkerHelp,
+       [](ParamReader& p) { return std::make_unique<skills::Team>(skills::ROLE_GOALIE, p.walker()); }},
+      {"Striker", std::string("plays a match as striker; ") + walkerHelp,
+       [](ParamReader& p) { return std::make_unique<skills::Team>(skills::ROLE_STRIKER, p.walker()); }},
+      {"Midfielder", std::string("plays a match as midfielder (thesis Algorithm 4.1); ") + walkerHelp,
+       [](ParamReader& p) { return std::make_unique<skills::Team>(skills::ROLE_MIDFIELDER, p.walker()); }},
+      {"Defender", std::string("plays a match as defender (thesis Algorithm 4.2); ") + walkerHelp,
+       [](ParamReader& p) { return std::make_unique<skills::Team>(skills::ROLE_DEFENDER, p.walker()); }},
   };
   return all;
 }

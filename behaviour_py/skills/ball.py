@@ -17,7 +17,7 @@ def pointBehindBall(ball, goalX, goalY, behind):
     facing the goal."""
     dx = goalX - ball.x
     dy = goalY - ball.y
-    dist = math.hypot(dx, dy)
+    dist = math.sqrt(dx * dx + dy * dy)  # not hypot: the C++ port's double version gets the same bits
     if dist < MIN_GOAL_DIST:
         dirX, dirY = 1.0, 0.0
     else:

@@ -1,4 +1,5 @@
-"""GoToBall: walk to BEHIND_BALL_DIST behind the ball, facing the goal (via GoToPose).
+"""GoToBall: walk to BEHIND_BALL_DIST behind the ball, facing the goal (via GoToPose, or
+LearnedGoToPose when given a policy).
 
 Uses localisation.ballPos while the ball was seen recently; otherwise stands, leaving the
 head to search.
@@ -7,15 +8,18 @@ import actioncommand
 
 from .ball import BEHIND_BALL_DIST, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, ballRecentlySeen, pointBehindBall
 from .go_to_pose import GoToPose
+from .learned_go_to_pose import LearnedGoToPose
 
 
 class GoToBall:
-    def __init__(self, goalX=OPPONENT_GOAL_X, goalY=OPPONENT_GOAL_Y, behind=BEHIND_BALL_DIST):
-        """goalX, goalY: the goal to face (mm); behind: robot-to-ball distance (mm)."""
+    def __init__(self, goalX=OPPONENT_GOAL_X, goalY=OPPONENT_GOAL_Y, behind=BEHIND_BALL_DIST, policy=None):
+        """goalX, goalY: the goal to face (mm); behind: robot-to-ball distance (mm); policy:
+        None to walk with GoToPose, else the learned policy's file (data-relative) to walk
+        with LearnedGoToPose."""
         self.goalX = goalX
         self.goalY = goalY
         self.behind = behind
-        self.goToPose = GoToPose()
+        self.goToPose = GoToPose() if policy is None else LearnedGoToPose(policy=policy)
 
     def tick(self, blackboard):
         if not ballRecentlySeen(blackboard):

@@ -30,16 +30,16 @@ DRIBBLE_POWER = 1.0                        # ... and of a dribble (about 1 m)
 
 
 class LineUpAndKick:
-    def __init__(self, goalX=OPPONENT_GOAL_X, goalY=OPPONENT_GOAL_Y, dribble=False, power=None):
+    def __init__(self, goalX=OPPONENT_GOAL_X, goalY=OPPONENT_GOAL_Y, dribble=False, power=None, policy=None):
         """goalX, goalY: where to kick (mm); dribble: dribble instead of kicking; power:
-        [0, 1], None for KICK_POWER or DRIBBLE_POWER."""
+        [0, 1], None for KICK_POWER or DRIBBLE_POWER; policy: GoToBall's (None: GoToPose)."""
         self.goalX = goalX
         self.goalY = goalY
         self.dribble = dribble
         if power is None:
             power = DRIBBLE_POWER if dribble else KICK_POWER
         self.power = power
-        self.goToBall = GoToBall(goalX, goalY, BEHIND_BALL_DIST)
+        self.goToBall = GoToBall(goalX, goalY, BEHIND_BALL_DIST, policy)
         self.liningUp = False
         self.foot = robot.Foot.LEFT
 

@@ -14,9 +14,10 @@ def shouldDribble(ballX, ballY):
 
 
 class Striker:
-    def __init__(self):
-        self.kick = LineUpAndKick(OPPONENT_GOAL_X, OPPONENT_GOAL_Y, False)
-        self.dribble = LineUpAndKick(OPPONENT_GOAL_X, OPPONENT_GOAL_Y, True)
+    def __init__(self, policy=None):
+        """policy: the learned walker's policy file to approach the ball with (None: GoToPose)."""
+        self.kick = LineUpAndKick(OPPONENT_GOAL_X, OPPONENT_GOAL_Y, False, policy=policy)
+        self.dribble = LineUpAndKick(OPPONENT_GOAL_X, OPPONENT_GOAL_Y, True, policy=policy)
         self.dribbling = False
 
     def tick(self, blackboard):

@@ -80,11 +80,12 @@ def messageInfo(blackboard, role):
 
 
 class Team:
-    def __init__(self, fixedRole=ROLE_NONE):
-        """fixedRole: play this role always (ROLE_NONE: assign roles from the messages)."""
+    def __init__(self, fixedRole=ROLE_NONE, policy=None):
+        """fixedRole: play this role always (ROLE_NONE: assign roles from the messages);
+        policy: the striker's learned walker policy file (None: GoToPose)."""
         self.fixedRole = fixedRole
         self.role = fixedRole
-        self.skills = {ROLE_GOALIE: Goalie(), ROLE_STRIKER: Striker(), ROLE_DEFENDER: Defender(),
+        self.skills = {ROLE_GOALIE: Goalie(), ROLE_STRIKER: Striker(policy), ROLE_DEFENDER: Defender(),
                        ROLE_MIDFIELDER: Midfielder()}
         self.readyPose = GoToPose()
         self.head = LookForBall()

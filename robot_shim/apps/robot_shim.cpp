@@ -1,6 +1,7 @@
 // robot_shim: one robot's own code (Blackboard, adapters, MotionAdapter, WalkCycle and a
 // behaviour) playing in sim_world over LCM. Thin program: options -> Robot -> run_robot.
 #include <csignal>
+#include <filesystem>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -12,6 +13,7 @@
 #include "touchline/ini.hpp"
 #include "touchline/lcm/robot_node.hpp"
 #include "touchline/python/python_behaviour.hpp"
+#include "touchline/robot_api/data.hpp"
 
 namespace po = boost::program_options;
 using namespace touchline;
@@ -62,7 +64,8 @@ std::string behaviour_list() {
 
 int main(int argc, char** argv) {
   int team = -1, player = -1;
-  std::string behaviour_name = "stand", walk_config, kick_config, field_config, python_dir = TOUCHLINE_PYTHON_DIR;
+  std::string behaviour_name = "stand", walk_config, kick_config, field_config, python_dir = TOUCHLINE_PYTHON_DIR,
+              data_dir = api::data_dir();
   robot::LocalisationModeDef localisation;
   std::vector<std::string> param_args;
   transport::RobotNodeDef node;
@@ -80,6 +83,9 @@ int main(int argc, char** argv) {
     ("param", po::value(&param_args)->composing(), "a behaviour parameter, key=value (repeatable)")
     ("python-dir", po::value(&python_dir)->default_value(python_dir),
      "the Python behaviour's folder: first on sys.path, its .py files reloaded when edited")
+    ("data-dir", po::value(&data_dir)->default_value(data_dir),
+     "the robot's data directory (learned policies, ...): C++ api::data_path(name) and Python "
+     "robot.data_path(name) look there")
     ("charge-cpu", po::bool_switch(&timing.charge_cpu),
      "charge the behaviour's CPU time to simulated time: a tick using more than one frame "
      "(33.3 ms) of CPU makes the robot miss frames as on the robot (the last request stays in force)")
@@ -113,6 +119,8 @@ int main(int argc, char** argv) {
     if (!walk_config.empty()) walk = robot::load_walk_def(walk_config);
     if (!kick_config.empty()) kick = robot::load_kick_def(kick_config);
     if (!field_config.empty()) localisation.filters.field = robot::localisation::load_field_map(field_config);
+    if (!std::filesystem::is_directory(data_dir)) throw po::error("--data-dir " + data_dir + " is not a directory");
+    api::set_data_dir(data_dir); // before the behaviour is made: it may load its data
     if (const auto module = python_module(behaviour_name)) {
       // Python's own signal handlers stay off: SIGINT/SIGTERM stop the shim (below); no
       // program directory on sys.path: the behaviour's modules come from --python-dir alone.

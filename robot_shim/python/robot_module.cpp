@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include "touchline/robot_api/blackboard.hpp"
+#include "touchline/robot_api/data.hpp"
 
 namespace py = pybind11;
 
@@ -42,6 +43,14 @@ void define_geometry(py::module_& m) {
   m.def("normaliseTheta", &normaliseTheta, "wraps an angle into [-pi, pi)");
   m.def("toRobotRelative", &toRobotRelative, py::arg("robot"), py::arg("x"), py::arg("y"),
         "robot-relative coordinates of the field point (x, y) seen from `robot`");
+}
+
+void define_data(py::module_& m) {
+  m.def("data_path", &data_path, py::arg("name"),
+        "the path of `name` (e.g. 'policies/go_to_pose.policy') in the robot's data directory; an absolute name as is");
+  m.def("data_dir", &data_dir, "the robot's data directory (robot_shim --data-dir)");
+  m.def("set_data_dir", &set_data_dir, py::arg("directory"),
+        "sets the robot's data directory (for tests and tools; robot_shim sets it from --data-dir)");
 }
 
 void define_action_command(py::module_& m) {
@@ -159,6 +168,7 @@ void define_blackboard(py::module_& m) {
 void define_robot_module(py::module_& m) {
   m.doc() = "The robot API for behaviour code: Blackboard (read-only), ActionCommand types, constants. mm, rad.";
   define_geometry(m);
+  define_data(m);
   define_action_command(m);
   define_blackboard(m);
 }

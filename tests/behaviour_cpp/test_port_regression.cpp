@@ -3,7 +3,14 @@
 // matches of the Python behaviour; re-record with tools/record_corpus.py) is fed frame by
 // frame to the embedded Python behaviour and to its C++ port, both fresh, and each frame's
 // ActionCommand must agree: discrete fields exactly, floats within kAbs + kRel * |value|.
+//
+// The learned-walker runs (walker=learned, LearnedGoToPose) are replayed with the trained
+// policy (config/policies/go_to_pose.policy) when it is there, else with the test policy of
+// skills/policy_files.hpp: any policy tests that both ports pick the same actions.
 #include <pybind11/embed.h>
+
+#include <filesystem>
+#include <iostream>
 
 #include <cmath>
 #include <map>
@@ -20,6 +27,10 @@
 #include "touchline/blackboard_snapshot_t.hpp"
 #include "touchline/lcm/snapshot.hpp"
 #include "touchline/python/python_behaviour.hpp"
+#include "touchline/behaviour/skills/tile_policy.hpp"
+#include "touchline/robot_api/data.hpp"
+
+#include "skills/policy_files.hpp"
 
 using namespace touchline;
 namespace AC = api::ActionCommand;
@@ -131,10 +142,20 @@ class PortRegression : public ::testing::TestWithParam<size_t> {
  protected:
   static void SetUpTestSuite() {
     if (!Py_IsInitialized()) interpreter_ = std::make_unique<pybind11::scoped_interpreter>(false, 0, nullptr, false);
+    const std::string trained = api::data_path(behaviour::skills::DEFAULT_POLICY);
+    if (std::filesystem::is_regular_file(trained)) {
+      std::cout << "learned runs replayed with " << trained << "\n";
+    } else {
+      testData_ = std::make_unique<behaviour::test::TestDataDir>();
+      std::cout << "learned runs replayed with the test policy (no " << trained << " yet)\n";
+    }
   }
+  static void TearDownTestSuite() { testData_.reset(); }
   static std::unique_ptr<pybind11::scoped_interpreter> interpreter_;
+  static std::unique_ptr<behaviour::test::TestDataDir> testData_;
 };
 std::unique_ptr<pybind11::scoped_interpreter> PortRegression::interpreter_;
+std::unique_ptr<behaviour::test::TestDataDir> PortRegression::testData_;
 
 TEST_P(PortRegression, CppPortAgreesWithPythonOnEveryFrame) {
   const RobotRun& run = corpus()[GetParam()];
@@ -185,11 +206,14 @@ TEST(PortCorpus, HasThousandsOfFramesCoveringEverySkill) {
   std::set<std::string> skills;
   for (const RobotRun& run : corpus()) {
     frames += run.frames.size();
-    skills.insert(params_of(run.behaviour)["skill"]);
+    auto params = params_of(run.behaviour);
+    skills.insert(params["skill"] + (params["walker"] == "learned" ? " walker=learned" : ""));
   }
   EXPECT_GE(frames, 3000u);
-  const std::set<std::string> every = {"GoToBall", "GoToPose", "LineUpAndKick", "TrackBall", "HeadScan",
-                                       "Team",     "Striker",  "Goalie",        "Midfielder", "Defender"};
+  const std::set<std::string> every = {
+      "GoToBall", "GoToPose",   "LineUpAndKick", "TrackBall",       "HeadScan",
+      "Team",     "Striker",    "Goalie",        "Midfielder",      "Defender",
+      "LearnedGoToPose", "GoToBall walker=learned", "Striker walker=learned"};
   for (const std::string& skill : every) EXPECT_TRUE(skills.count(skill)) << "no frames of " << skill;
 }
 

@@ -2,10 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include "skills/policy_files.hpp"
+
 using touchline::behaviour::BehaviourError;
 using touchline::behaviour::make_behaviour;
 
 TEST(Registry, MakesEveryListedBehaviour) {
+  const touchline::behaviour::test::TestDataDir data; // LearnedGoToPose reads its policy
   for (const auto& [name, help] : touchline::behaviour::behaviour_help()) {
     EXPECT_NE(make_behaviour(name, {}), nullptr) << name;
     EXPECT_FALSE(help.empty()) << name;
@@ -24,7 +27,7 @@ TEST(Registry, UnknownNameListsTheKnownOnes) {
     make_behaviour("striker9000", {});
     FAIL();
   } catch (const BehaviourError& e) {
-    EXPECT_EQ(std::string(e.what()), "unknown behaviour 'striker9000' (known: stand, walk, goto, GoToPose, GoToBall, LineUpAndKick, TrackBall, HeadScan, Team, Goalie, Striker, Midfielder, Defender)");
+    EXPECT_EQ(std::string(e.what()), "unknown behaviour 'striker9000' (known: stand, walk, goto, GoToPose, LearnedGoToPose, GoToBall, LineUpAndKick, TrackBall, HeadScan, Team, Goalie, Striker, Midfielder, Defender)");
   }
 }
 

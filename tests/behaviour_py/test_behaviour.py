@@ -4,6 +4,8 @@ import pytest
 import robot
 from boards import board
 
+from policy_files import dataDir  # noqa: F401 (a fixture)
+
 import behaviour
 from skills.ball import BALL_LOST_FRAMES
 from skills.head_scan import SCAN_PITCH, SCAN_YAW_STEP
@@ -64,7 +66,7 @@ def test_line_up_and_kick_and_track_ball_by_name(monkeypatch):
     assert command.head.pitch == pytest.approx(0.313333, abs=1e-5)  # tracks even when lost
 
 
-def test_every_skill_is_made_with_its_defaults():
+def test_every_skill_is_made_with_its_defaults(dataDir):
     for name in behaviour.SKILL_NAMES:
         assert behaviour.makeBehaviour({"skill": name}).tick(board()) is not None
     assert set(behaviour.SKILL_NAMES) == set(behaviour.SKILLS)
@@ -73,8 +75,8 @@ def test_every_skill_is_made_with_its_defaults():
 def test_unknown_skill_lists_the_known_ones():
     with pytest.raises(behaviour.BehaviourError) as error:
         behaviour.makeBehaviour({"skill": "Striker9000"})
-    assert str(error.value) == ("unknown skill 'Striker9000' (known: GoToPose, GoToBall, LineUpAndKick, TrackBall, "
-                                "HeadScan, Team, Goalie, Striker, Midfielder, Defender)")
+    assert str(error.value) == ("unknown skill 'Striker9000' (known: GoToPose, LearnedGoToPose, GoToBall, LineUpAndKick, "
+                                "TrackBall, HeadScan, Team, Goalie, Striker, Midfielder, Defender)")
 
 
 @pytest.mark.parametrize("params", [

@@ -1,5 +1,5 @@
 """Every skill constant has the same name and value in both ports: the C++ headers'
-`inline constexpr` constants against the Python modules' UPPER_CASE ones."""
+`inline constexpr` constants (numbers and strings) against the Python modules' UPPER_CASE ones."""
 import ast
 import math
 import pathlib
@@ -8,13 +8,13 @@ import re
 import pytest
 
 import behaviour
-from skills import (ball, camera, field, go_to_pose, goalie, head_scan, line_up_and_kick, robot_limits, striker,
-                    supporter, team, team_comm)
+from skills import (ball, camera, field, go_to_pose, goalie, head_scan, learned_go_to_pose, line_up_and_kick,
+                    robot_limits, striker, supporter, team, team_comm, tile_policy)
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 CPP_SKILLS = ROOT / "behaviour_cpp" / "include" / "touchline" / "behaviour" / "skills"
 PY_SKILLS = ROOT / "behaviour_py" / "skills"
-CONSTANT = re.compile(r"inline constexpr (?:float|int|int32_t) (\w+) = ([^;]+);")
+CONSTANT = re.compile(r"inline constexpr (?:float|int|int32_t|const char\*) (\w+) = ([^;]+);")
 FLOAT_LITERAL = re.compile(r"\b(\d+(?:\.\d*)?)f\b")
 
 
@@ -43,7 +43,8 @@ def python_constants():
     chest colours of behaviour.py."""
     modules = {"ball": ball, "camera": camera, "go_to_pose": go_to_pose, "head_scan": head_scan,
                "line_up_and_kick": line_up_and_kick, "robot_limits": robot_limits, "field": field, "goalie": goalie,
-               "striker": striker, "supporter": supporter, "team": team, "team_comm": team_comm}
+               "striker": striker, "supporter": supporter, "team": team, "team_comm": team_comm,
+               "learned_go_to_pose": learned_go_to_pose, "tile_policy": tile_policy}
     assert {path.stem for path in PY_SKILLS.glob("*.py")} - set(modules) <= {"__init__", "go_to_ball", "look_for_ball",
                                                                               "stand", "track_ball"}
     values = {}
@@ -61,4 +62,7 @@ def test_the_same_constants_in_both_ports():
 
 @pytest.mark.parametrize("name, value", sorted(cpp_constants().items()))
 def test_the_same_values_in_both_ports(name, value):
-    assert python_constants()[name] == pytest.approx(value, rel=1e-6)
+    if isinstance(value, str):
+        assert python_constants()[name] == value
+    else:
+        assert python_constants()[name] == pytest.approx(value, rel=1e-6)

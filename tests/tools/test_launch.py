@@ -66,3 +66,19 @@ def test_bad_options_are_one_line(tmp_path):
     result = launch("--team-size", 9)
     assert result.returncode == 2
     assert "--team-size must be 1..7" in result.stderr
+
+
+def test_team_specs_carry_skill_parameters():
+    sys.path.insert(0, str(ROOT / "tools"))
+    from launch import team_behaviour
+
+    assert team_behaviour("py:Team") == ["--behaviour", "py", "--param", "skill=Team"]
+    assert team_behaviour("cpp:Team,walker=learned,policy=p/x.policy") == [
+        "--behaviour", "Team", "--param", "walker=learned", "--param", "policy=p/x.policy"]
+    assert team_behaviour("py:Striker,walker=learned") == [
+        "--behaviour", "py", "--param", "skill=Striker", "--param", "walker=learned"]
+    for bad in ("Team", "java:Team", "py:", "py:Team,walker", "py:Team,=x", "py:a:b"):
+        assert team_behaviour(bad) is None, bad
+    result = launch("--team0", "py:Team,walker")
+    assert result.returncode == 2
+    assert "--team0 must be py:SKILL or cpp:SKILL, then any ,KEY=VALUE (got 'py:Team,walker')" in result.stderr

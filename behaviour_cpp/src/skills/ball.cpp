@@ -20,4 +20,16 @@ api::AbsCoord pointBehindBall(const api::AbsCoord& ball, float goalX, float goal
   return {ball.x - behind * dirX, ball.y - behind * dirY, std::atan2(dirY, dirX)};
 }
 
+FieldPose pointBehindBallExact(const api::AbsCoord& ball, double goalX, double goalY, double behind) {
+  const double dx = goalX - double{ball.x};
+  const double dy = goalY - double{ball.y};
+  const double dist = std::sqrt(dx * dx + dy * dy); // as ball.py: not hypot, whose last bit may differ
+  double dirX = 1.0, dirY = 0.0;
+  if (dist >= MIN_GOAL_DIST) {
+    dirX = dx / dist;
+    dirY = dy / dist;
+  }
+  return {double{ball.x} - behind * dirX, double{ball.y} - behind * dirY, std::atan2(dirY, dirX)};
+}
+
 } // namespace touchline::behaviour::skills

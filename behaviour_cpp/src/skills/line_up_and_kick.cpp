@@ -10,12 +10,13 @@ namespace touchline::behaviour::skills {
 
 using namespace api;
 
-LineUpAndKick::LineUpAndKick(float goalX, float goalY, bool dribble, std::optional<float> power)
+LineUpAndKick::LineUpAndKick(float goalX, float goalY, bool dribble, std::optional<float> power,
+                             const std::optional<std::string>& policy)
     : goalX_(goalX),
       goalY_(goalY),
       dribble_(dribble),
       power_(power.value_or(dribble ? DRIBBLE_POWER : KICK_POWER)),
-      goToBall_(goalX, goalY, BEHIND_BALL_DIST) {}
+      goToBall_(goalX, goalY, BEHIND_BALL_DIST, policy) {}
 
 ActionCommand::All LineUpAndKick::tick(const Blackboard& blackboard) {
   if (!ballRecentlySeen(blackboard)) {

@@ -10,7 +10,9 @@ bool shouldDribble(float ballX, float ballY) {
   return std::hypot(OPPONENT_GOAL_X - ballX, OPPONENT_GOAL_Y - ballY) < STRIKER_DRIBBLE_DIST;
 }
 
-Striker::Striker() : kick_(OPPONENT_GOAL_X, OPPONENT_GOAL_Y, false), dribble_(OPPONENT_GOAL_X, OPPONENT_GOAL_Y, true) {}
+Striker::Striker(const std::optional<std::string>& policy)
+    : kick_(OPPONENT_GOAL_X, OPPONENT_GOAL_Y, false, std::nullopt, policy),
+      dribble_(OPPONENT_GOAL_X, OPPONENT_GOAL_Y, true, std::nullopt, policy) {}
 
 ActionCommand::All Striker::tick(const Blackboard& blackboard) {
   if (ballRecentlySeen(blackboard) && !kick_.liningUp() && !dribble_.liningUp()) {

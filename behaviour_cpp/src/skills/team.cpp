@@ -35,7 +35,8 @@ TeamInfo messageInfo(const Blackboard& blackboard, int role) {
                       blackboard.localisation.ballPosRR.distance, ball.x, ball.y);
 }
 
-Team::Team(int fixedRole) : fixedRole_(fixedRole), role_(fixedRole) {}
+Team::Team(int fixedRole, const std::optional<std::string>& policy)
+    : fixedRole_(fixedRole), role_(fixedRole), striker_(policy) {}
 
 ActionCommand::All Team::tick(const Blackboard& blackboard) {
   role_ = chooseRole(blackboard);

@@ -16,4 +16,14 @@ bool ballRecentlySeen(const api::Blackboard& blackboard);
 /// (x, y, theta): `behind` mm from `ball` on the line from the goal through the ball, facing the goal.
 api::AbsCoord pointBehindBall(const api::AbsCoord& ball, float goalX, float goalY, float behind);
 
+/// A field pose in double: mm, mm, rad.
+struct FieldPose {
+  double x = 0, y = 0, theta = 0;
+};
+
+/// pointBehindBall in double, operation for operation as Python computes it: the learned
+/// walker's target, which must be the same bits in both ports for its policy to pick the
+/// same action.
+FieldPose pointBehindBallExact(const api::AbsCoord& ball, double goalX, double goalY, double behind);
+
 } // namespace touchline::behaviour::skills

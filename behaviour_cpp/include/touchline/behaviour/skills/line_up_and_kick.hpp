@@ -4,6 +4,7 @@
 // ball's side when lining up starts and kept until it ends. The port of
 // behaviour_py/skills/line_up_and_kick.py.
 #include <optional>
+#include <string>
 
 #include "touchline/behaviour/skills/ball.hpp"
 #include "touchline/behaviour/skills/go_to_ball.hpp"
@@ -28,9 +29,10 @@ inline constexpr float DRIBBLE_POWER = 1.0f;         ///< ... and of a dribble (
 class LineUpAndKick : public api::Behaviour {
  public:
   /// goalX, goalY: where to kick (mm); dribble: dribble instead of kicking; power: [0, 1],
-  /// nullopt for KICK_POWER or DRIBBLE_POWER.
+  /// nullopt for KICK_POWER or DRIBBLE_POWER; policy: GoToBall's (nullopt: GoToPose).
   explicit LineUpAndKick(float goalX = OPPONENT_GOAL_X, float goalY = OPPONENT_GOAL_Y, bool dribble = false,
-                         std::optional<float> power = std::nullopt);
+                         std::optional<float> power = std::nullopt,
+                         const std::optional<std::string>& policy = std::nullopt);
   api::ActionCommand::All tick(const api::Blackboard& blackboard) override;
 
   bool liningUp() const { return liningUp_; }

@@ -3,6 +3,9 @@
 // while the ball is within STRIKER_DRIBBLE_DIST of the opponent goal's centre. The choice is
 // made while neither is lining up and kept through a line-up. The port of
 // behaviour_py/skills/striker.py.
+#include <optional>
+#include <string>
+
 #include "touchline/behaviour/skills/line_up_and_kick.hpp"
 
 namespace touchline::behaviour::skills {
@@ -13,7 +16,8 @@ bool shouldDribble(float ballX, float ballY);
 
 class Striker : public api::Behaviour {
  public:
-  Striker();
+  /// policy: the learned walker's policy file to approach the ball with (nullopt: GoToPose).
+  explicit Striker(const std::optional<std::string>& policy = std::nullopt);
   api::ActionCommand::All tick(const api::Blackboard& blackboard) override;
   bool dribbling() const { return dribbling_; }
 

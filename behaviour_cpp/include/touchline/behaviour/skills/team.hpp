@@ -11,6 +11,8 @@
 // supporter back home, that has not seen the ball for SEARCH_TURN_FRAMES turns on the spot
 // towards the side it was last seen on.
 #include <cstdint>
+#include <optional>
+#include <string>
 
 #include "touchline/behaviour/skills/goalie.hpp"
 #include "touchline/behaviour/skills/look_for_ball.hpp"
@@ -48,8 +50,9 @@ TeamInfo messageInfo(const api::Blackboard& blackboard, int role);
 
 class Team : public api::Behaviour {
  public:
-  /// fixedRole: play this role always (ROLE_NONE: assign roles from the messages).
-  explicit Team(int fixedRole = ROLE_NONE);
+  /// fixedRole: play this role always (ROLE_NONE: assign roles from the messages); policy:
+  /// the striker's learned walker policy file (nullopt: GoToPose).
+  explicit Team(int fixedRole = ROLE_NONE, const std::optional<std::string>& policy = std::nullopt);
   api::ActionCommand::All tick(const api::Blackboard& blackboard) override;
   int role() const { return role_; }
 
