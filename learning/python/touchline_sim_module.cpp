@@ -7,12 +7,14 @@
 #include <tuple>
 #include <vector>
 
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
 #include "touchline/behaviour/registry.hpp"
 #include "touchline/ini.hpp"
 #include "touchline/learning/single_robot_sim.hpp"
+#include "touchline/learning/tile_q.hpp"
 
 namespace py = pybind11;
 using namespace touchline;
@@ -31,6 +33,19 @@ learning::SingleRobotDef make_def(const std::string& world_config, const std::ve
 }
 
 Pose as_tuple(const Pose2D& p) { return {p.x_mm, p.y_mm, p.theta_rad}; }
+Pose2D as_pose(const Pose& p) { return {std::get<0>(p), std::get<1>(p), std::get<2>(p)}; }
+
+std::vector<learning::WalkAction> as_actions(const std::vector<Pose>& commands) {
+  std::vector<learning::WalkAction> actions;
+  for (const Pose& c : commands) actions.push_back({std::get<0>(c), std::get<1>(c), std::get<2>(c)});
+  return actions;
+}
+
+learning::EpisodeDef episode_def(double distance_mm, double heading_rad, int max_frames) {
+  return {distance_mm, heading_rad, max_frames};
+}
+
+void define_tile_learning(py::module_& m);
 
 } // namespace
 
@@ -98,4 +113,89 @@ PYBIND11_MODULE(touchline_sim, m) {
         const sim::FieldDef& f = sim.def().world.field;
         return std::map<std::string, float>{{"length_mm", f.length_mm}, {"width_mm", f.width_mm}};
       });
+  define_tile_learning(m);
 }
+
+namespace {
+
+void define_tile_learning(py::module_& m) {
+  py::class_<learning::TileCodingDef>(m, "TileCodingDef")
+      .def(py::init<>())
+      .def_readwrite("distance_scale_mm", &learning::TileCodingDef::distance_scale_mm)
+      .def_readwrite("max_distance_mm", &learning::TileCodingDef::max_distance_mm)
+      .def_readwrite("tilings", &learning::TileCodingDef::tilings)
+      .def_readwrite("tiles_distance", &learning::TileCodingDef::tiles_distance)
+      .def_readwrite("tiles_bearing", &learning::TileCodingDef::tiles_bearing)
+      .def_readwrite("tiles_heading", &learning::TileCodingDef::tiles_heading);
+
+  py::class_<learning::TileCoding>(m, "TileCoding")
+      .def(py::init<const learning::TileCodingDef&>())
+      .def("cells", &learning::TileCoding::cells)
+      .def("active", [](const learning::TileCoding& coding, double x, double y, double heading) {
+        std::vector<int> cells(static_cast<size_t>(coding.def().tilings));
+        coding.active(x, y, heading, cells.data());
+        return cells;
+      }, "The K active cells for a robot-relative target (x mm, y mm, heading error rad).");
+
+  py::class_<learning::TileQ>(m, "TileQ")
+      .def(py::init([](const learning::TileCodingDef& coding, const std::vector<Pose>& commands) {
+             return std::make_unique<learning::TileQ>(coding, as_actions(commands));
+           }),
+           py::arg("coding"), py::arg("actions"), "actions: [(forward mm/s, left mm/s, turn rad/s), ...]")
+      .def_property_readonly("weights", [](py::object self) {
+        auto& q = self.cast<learning::TileQ&>();
+        // A view, not a copy: writing it (np.copyto) loads weights; the TileQ stays alive with it.
+        return py::array_t<float>({q.weights().size()}, {sizeof(float)}, q.weights().data(), self);
+      })
+      .def_property_readonly("tilings", [](const learning::TileQ& q) { return q.coding().def().tilings; })
+      .def_property_readonly("actions", [](const learning::TileQ& q) {
+        std::vector<Pose> actions;
+        for (const auto& a : q.actions()) actions.emplace_back(a.forward_mm_s, a.left_mm_s, a.turn_rad_s);
+        return actions;
+      })
+      .def_property_readonly("coding", [](const learning::TileQ& q) { return q.coding().def(); })
+      .def("greedy", py::overload_cast<double, double, double>(&learning::TileQ::greedy, py::const_),
+           "The greedy action for a robot-relative target (ties: lowest index).")
+      .def("values", [](const learning::TileQ& q, double x, double y, double heading) {
+        std::vector<int> cells(static_cast<size_t>(q.coding().def().tilings));
+        q.coding().active(x, y, heading, cells.data());
+        std::vector<double> values;
+        for (int a = 0; a < q.action_count(); ++a) values.push_back(q.value(cells, a));
+        return values;
+      });
+
+  py::class_<learning::SarsaLambdaDef>(m, "SarsaLambdaDef")
+      .def(py::init<>())
+      .def_readwrite("alpha", &learning::SarsaLambdaDef::alpha)
+      .def_readwrite("lambda_", &learning::SarsaLambdaDef::lambda)
+      .def_readwrite("gamma", &learning::SarsaLambdaDef::gamma)
+      .def_readwrite("trace_cutoff", &learning::SarsaLambdaDef::trace_cutoff);
+
+  py::class_<learning::SarsaLambda>(m, "SarsaLambda")
+      .def(py::init<learning::TileQ&, const learning::SarsaLambdaDef&, uint64_t>(), py::keep_alive<1, 2>(),
+           py::arg("q"), py::arg("definition"), py::arg("seed"))
+      .def("episode",
+           [](learning::SarsaLambda& learner, learning::SingleRobotSim& sim, const Pose& start, const Pose& target,
+              double epsilon, double distance_mm, double heading_rad, int max_frames, uint64_t sim_seed) {
+             const auto r = learner.episode(sim, as_pose(start), as_pose(target), epsilon,
+                                            episode_def(distance_mm, heading_rad, max_frames), sim_seed);
+             return std::make_pair(r.frames, r.success);
+           },
+           py::arg("sim"), py::arg("start"), py::arg("target"), py::arg("epsilon"), py::arg("success_distance_mm"),
+           py::arg("success_heading_rad"), py::arg("max_frames"), py::arg("sim_seed"),
+           "One learning episode; returns (frames, reached).")
+      .def("set_alpha", &learning::SarsaLambda::set_alpha, "A new step size from now on.");
+
+  m.def("greedy_episode",
+        [](const learning::TileQ& q, learning::SingleRobotSim& sim, const Pose& start, const Pose& target,
+           double distance_mm, double heading_rad, int max_frames, uint64_t sim_seed) {
+          const auto r = learning::greedy_episode(q, sim, as_pose(start), as_pose(target),
+                                                  episode_def(distance_mm, heading_rad, max_frames), sim_seed);
+          return std::make_pair(r.frames, r.success);
+        },
+        py::arg("q"), py::arg("sim"), py::arg("start"), py::arg("target"), py::arg("success_distance_mm"),
+        py::arg("success_heading_rad"), py::arg("max_frames"), py::arg("sim_seed"),
+        "The greedy policy's episode, nothing learned; returns (frames, reached).");
+}
+
+} // namespace
