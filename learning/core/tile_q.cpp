@@ -126,10 +126,10 @@ EpisodeResult SarsaLambda::episode(SingleRobotSim& sim, const Pose2D& start, con
   if (reached(relative, episode)) return {0, true};
   std::vector<int> cells = active_cells(q_, relative);
   int action = choose(cells, epsilon);
+  double before = potential(def_, relative);
   while (true) {
     step(sim, q_.actions()[static_cast<size_t>(action)]);
     ++result.frames;
-    const double before = potential(def_, relative);
     for (int cell : cells) {
       const int index = static_cast<int>(static_cast<size_t>(cell) * actions + static_cast<size_t>(action));
       if (trace_[static_cast<size_t>(index)] == 0) traced_.push_back(index);
@@ -151,6 +151,7 @@ EpisodeResult SarsaLambda::episode(SingleRobotSim& sim, const Pose2D& start, con
     decay_traces(def_.gamma * def_.lambda);
     cells = std::move(next_cells);
     action = next_action;
+    before = after; // the next step starts where this one ended
   }
   return result;
 }
