@@ -13,7 +13,7 @@ import gymnasium as gym
 import numpy as np
 
 from touchline_rl.actions import scale_continuous, thesis_actions
-from touchline_rl.geometry import relative_target
+from touchline_rl.geometry import field_region, reached, relative_target, uniform_pose
 from touchline_rl.native import touchline_sim
 
 # Observation bounds: far beyond any field's diagonal, so every reachable target is inside.
@@ -42,10 +42,8 @@ class GoToPoseEnv(gym.Env):
         self.observation_space = gym.spaces.Box(
             low=np.array([-_REACH_MM, -_REACH_MM, -math.pi], dtype=np.float32),
             high=np.array([_REACH_MM, _REACH_MM, math.pi], dtype=np.float32), dtype=np.float32)
-        field = self.sim.field
-        inside = ((-field["length_mm"] / 2, field["length_mm"] / 2), (-field["width_mm"] / 2, field["width_mm"] / 2))
-        self.start_region = start_region or inside
-        self.target_region = target_region or inside
+        self.start_region = start_region or field_region(self.sim.field)
+        self.target_region = target_region or field_region(self.sim.field)
         self.bounds = bounds
         self.success_distance_mm = success_distance_mm
         self.success_heading_rad = success_heading_rad
@@ -54,16 +52,11 @@ class GoToPoseEnv(gym.Env):
         self.target = (0.0, 0.0, 0.0)
         self._steps = 0
 
-    def _sample_pose(self, region):
-        (x0, x1), (y0, y1) = region
-        return (float(self.np_random.uniform(x0, x1)), float(self.np_random.uniform(y0, y1)),
-                float(self.np_random.uniform(-math.pi, math.pi)))
-
     def reset(self, *, seed=None, options=None):
         super().reset(seed=seed)
         options = options or {}
-        start = tuple(options["start"]) if "start" in options else self._sample_pose(self.start_region)
-        self.target = tuple(options["target"]) if "target" in options else self._sample_pose(self.target_region)
+        start = tuple(options["start"]) if "start" in options else uniform_pose(self.np_random, self.start_region)
+        self.target = tuple(options["target"]) if "target" in options else uniform_pose(self.np_random, self.target_region)
         self.sim.reset(int(self.np_random.integers(2**63)), start)
         self._steps = 0
         return self._observation(start), self._info(start)
@@ -80,17 +73,12 @@ class GoToPoseEnv(gym.Env):
         pose = self.sim.pose
         x, y, heading = relative_target(pose, self.target)
         reward = -1.0
-        terminated = self._reached(x, y, heading)
+        terminated = reached((x, y, heading), self.success_distance_mm, self.success_heading_rad)
         if not terminated and self.bounds is not None and not self._inside(pose):
             terminated, reward = True, self.out_of_bounds_reward
         truncated = not terminated and self._steps >= self.max_steps
         observation = np.array((x, y, heading), dtype=np.float32)
         return observation, reward, terminated, truncated, self._info(pose)
-
-    def _reached(self, x, y, heading):
-        if math.hypot(x, y) >= self.success_distance_mm:
-            return False
-        return self.success_heading_rad is None or abs(heading) < self.success_heading_rad
 
     def _inside(self, pose):
         x_min, x_max, y_min, y_max = self.bounds

@@ -6,7 +6,7 @@ import statistics
 
 import numpy as np
 
-from touchline_rl.geometry import lower_bound_s, relative_target
+from touchline_rl.geometry import field_region, lower_bound_s, reached, relative_target, uniform_pose
 from touchline_rl.native import touchline_sim
 
 FRAME_S = 1.0 / 30.0
@@ -16,25 +16,15 @@ def fixed_starts(count, field_size, seed=2026):
     """`count` (start, target) pairs uniform over the field inside its lines, headings
     uniform: the same for every skill and every run."""
     rng = np.random.default_rng(seed)
-    half_x, half_y = field_size["length_mm"] / 2, field_size["width_mm"] / 2
-
-    def pose():
-        return (float(rng.uniform(-half_x, half_x)), float(rng.uniform(-half_y, half_y)),
-                float(rng.uniform(-math.pi, math.pi)))
-
-    return [(pose(), pose()) for _ in range(count)]
-
-
-def reached(pose, target, distance_mm, heading_rad):
-    x, y, heading = relative_target(pose, target)
-    return math.hypot(x, y) < distance_mm and abs(heading) < heading_rad
+    region = field_region(field_size)
+    return [(uniform_pose(rng, region), uniform_pose(rng, region)) for _ in range(count)]
 
 
 def behaviour_episode(sim, name, params, start, target, seed, distance_mm, heading_rad, max_frames):
     """A C++ behaviour walking from start to target; (frames, reached)."""
     sim.reset(seed, start, behaviour=name, params=params)
     for frame in range(max_frames + 1):
-        if reached(sim.pose, target, distance_mm, heading_rad):
+        if reached(relative_target(sim.pose, target), distance_mm, heading_rad):
             return frame, True
         if frame < max_frames:
             sim.step_behaviour()

@@ -6,7 +6,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from touchline_rl.geometry import lower_bound_s
+from touchline_rl.geometry import field_region, lower_bound_s, uniform_pose
 from touchline_rl.native import touchline_sim
 
 # The walk commands the learner chooses among (forward mm/s, left mm/s, turn rad/s): the
@@ -53,9 +53,7 @@ def make_q(coding_overrides, actions=ACTIONS):
 
 def field_pose(rng, field_size, margin_mm=0.0):
     """A pose uniform inside the field's lines (less a margin), heading uniform."""
-    half_x, half_y = field_size["length_mm"] / 2 - margin_mm, field_size["width_mm"] / 2 - margin_mm
-    return (float(rng.uniform(-half_x, half_x)), float(rng.uniform(-half_y, half_y)),
-            float(rng.uniform(-math.pi, math.pi)))
+    return uniform_pose(rng, field_region(field_size, margin_mm))
 
 
 def training_episode(rng, field_size, definition):
