@@ -27,6 +27,8 @@
 #include <boost/program_options.hpp>
 #include <lcm/lcm-cpp.hpp>
 
+#include "touchline/lcm/match_key.hpp"
+
 #include "bench.hpp"
 
 namespace touchline::bench {
@@ -46,6 +48,9 @@ Child spawn(const std::string& name, const std::vector<std::string>& argv, const
 
   int err_pipe[2];  // reports an exec failure (close-on-exec: EOF means exec succeeded)
   if (pipe2(err_pipe, O_CLOEXEC) != 0) throw BenchError(std::string("pipe failed: ") + std::strerror(errno));
+  // Every program of a match authenticates with one secret: the first spawn draws it and
+  // the children inherit it.
+  setenv(touchline::transport::kMatchSecretVariable, touchline::transport::MatchKey::random().hex().c_str(), 0);
   std::cout << std::flush;
   std::cerr << std::flush;
   const pid_t parent = getpid();

@@ -13,6 +13,7 @@ import argparse
 import datetime
 import json
 import os
+import secrets
 import shutil
 import signal
 import subprocess
@@ -115,6 +116,8 @@ def read_config(config: Path) -> tuple:
 class Launcher:
     def __init__(self, args: argparse.Namespace):
         self.args = args
+        # One secret per match, handed to every program in the environment (never the command line).
+        os.environ["TOUCHLINE_MATCH_SECRET"] = secrets.token_hex(32)
         self.procs: list[tuple[str, subprocess.Popen, Path]] = []
         self.interrupted = False
         self.logdir = Path(tempfile.mkdtemp(prefix="touchline-"))

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import secrets
 import subprocess
 import sys
 import tempfile
@@ -56,6 +57,7 @@ POLICY = Path("policies") / "go_to_pose.policy"  # what the learned scenarios re
 def run_scenario(build: Path, data_dir: Path, params: dict, ball: tuple, seconds: float, robots: list, sets: list,
                  log: Path) -> None:
     overrides = [f"match.ball_start_x_mm={ball[0]}", f"match.ball_start_y_mm={ball[1]}", *sets]
+    os.environ.setdefault("TOUCHLINE_MATCH_SECRET", secrets.token_hex(32))  # the programs authenticate with it
     world = subprocess.Popen([build / "sim" / "sim_world", "--robots", str(len(robots)), "--duration", str(seconds),
                               "--quiet", "--lcm-url", LCM_URL, "--log", log,
                               *[a for o in overrides for a in ("--set", o)]],

@@ -68,6 +68,7 @@ int main(int argc, char** argv) {
               data_dir = api::data_dir();
   robot::LocalisationModeDef localisation;
   std::vector<std::string> param_args;
+  std::string secret_file;
   transport::RobotNodeDef node;
   robot::BehaviourTimingDef timing;
 
@@ -94,6 +95,9 @@ int main(int argc, char** argv) {
     ("field-config", po::value(&field_config), "the world config whose [field] the robot knows (landmarks for localisation); default: SPL 2011")
     ("perfect-localisation", po::bool_switch(&localisation.perfect), "the robot's pose from the truth instead of the filter (the ball still from the camera)")
     ("lcm-url", po::value(&node.lcm_url)->default_value(node.lcm_url), "LCM provider URL")
+    ("secret-file", po::value(&secret_file),
+     "the match secret (hex) every message is authenticated with; default: $TOUCHLINE_MATCH_SECRET. "
+     "Every program of the match needs the same one")
     ("join-timeout", po::value(&node.join_timeout_s)->default_value(node.join_timeout_s), "wall seconds to wait for sim_world to accept us")
     ("world-timeout", po::value(&node.world_timeout_s)->default_value(node.world_timeout_s), "wall seconds of silence from sim_world before exiting")
     ("snapshot-every", po::value(&node.snapshot_every)->default_value(node.snapshot_every),
@@ -116,6 +120,7 @@ int main(int argc, char** argv) {
       throw po::error("--player must be 1.." + std::to_string(kMaxTeamSize) + " (got " + std::to_string(player) + ")");
     if (node.join_timeout_s <= 0 || node.world_timeout_s <= 0) throw po::error("timeouts must be > 0");
     if (node.snapshot_every < 0) throw po::error("--snapshot-every must be >= 0");
+    node.key = transport::load_match_key(secret_file);
     if (!walk_config.empty()) walk = robot::load_walk_def(walk_config);
     if (!kick_config.empty()) kick = robot::load_kick_def(kick_config);
     if (!field_config.empty()) localisation.filters.field = robot::localisation::load_field_map(field_config);
@@ -146,6 +151,9 @@ int main(int argc, char** argv) {
     std::cerr << "robot_shim: " << e.what() << "\n";
     return kUsageError;
   } catch (const python::PythonBehaviourError& e) {
+    std::cerr << "robot_shim: " << e.what() << "\n";
+    return kUsageError;
+  } catch (const std::invalid_argument& e) { // the match secret
     std::cerr << "robot_shim: " << e.what() << "\n";
     return kUsageError;
   }

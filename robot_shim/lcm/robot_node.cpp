@@ -6,11 +6,10 @@
 #include <ostream>
 #include <random>
 
-#include <lcm/lcm-cpp.hpp>
-
 #include "touchline/game_state_t.hpp"
 #include "touchline/join_reply_t.hpp"
 #include "touchline/join_t.hpp"
+#include "touchline/lcm/bus.hpp"
 #include "touchline/lcm/snapshot.hpp"
 
 namespace touchline::transport {
@@ -28,16 +27,14 @@ int64_t random_instance() {
 class RobotNode {
  public:
   RobotNode(robot::Robot& robot, const RobotNodeDef& def, std::ostream& log)
-      : robot_(robot), def_(def), log_(log), lcm_(def.lcm_url), act_channel_(act_channel(robot.id())),
-        snapshot_channel_(snapshot_channel(robot.id())),
+      : robot_(robot), def_(def), log_(log),
+        bus_(def.lcm_url, def.key, [this](const std::string& what) { report_malformed(what); }),
+        act_channel_(act_channel(robot.id())), snapshot_channel_(snapshot_channel(robot.id())),
         name_("robot_shim " + std::to_string(robot.id().team) + "/" + std::to_string(robot.id().player)) {
-    if (!lcm_.good())
-      throw std::runtime_error("cannot open LCM at " + def.lcm_url +
-                               " (is a multicast route on lo? see README, Networking)");
     instance_ = def.instance ? def.instance : random_instance();
-    lcm_.subscribe(kJoinReplyChannel, &RobotNode::on_join_reply, this);
-    lcm_.subscribe(kSenseChannel, &RobotNode::on_sense, this);
-    lcm_.subscribe(kGameChannel, &RobotNode::on_game, this);
+    bus_.subscribe(kJoinReplyChannel, [this](const BusMessage& m) { on_join_reply(m); });
+    bus_.subscribe(kSenseChannel, [this](const BusMessage& m) { on_sense(m); });
+    bus_.subscribe(kGameChannel, [this](const BusMessage& m) { on_game(m); });
     robot_.keep_behaviour_view(def.snapshot_every > 0);
   }
 
@@ -46,7 +43,7 @@ class RobotNode {
     last_heard_us_ = wall_us();
     while (exit_ == kPlaying) {
       if (g_stop) return RobotExit::kInterrupted;
-      lcm_.handleTimeout(200);
+      bus_.handle(200);
       if (wall_us() - last_heard_us_ > static_cast<int64_t>(def_.world_timeout_s * 1e6)) {
         log_ << name_ << ": sim_world silent for " << def_.world_timeout_s << " s, giving up\n" << std::flush;
         return RobotExit::kNoWorld;
@@ -80,17 +77,17 @@ class RobotNode {
         msg.player = static_cast<int8_t>(robot_.id().player);
         msg.instance = instance_;
         msg.pid = static_cast<int32_t>(getpid());
-        lcm_.publish(kJoinChannel, &msg);
+        bus_.publish(kJoinChannel, msg);
         next_request = now + 250000;
       }
-      lcm_.handleTimeout(50);
+      bus_.handle(50);
     }
     return joined_;
   }
 
-  void on_join_reply(const ::lcm::ReceiveBuffer* buffer, const std::string& channel) {
+  void on_join_reply(const BusMessage& m) {
     join_reply_t msg;
-    if (!decode_or_report(buffer, channel, msg) || msg.instance != instance_) return;
+    if (!decode_or_report(m, msg) || msg.instance != instance_) return;
     if (msg.accepted) {
       joined_ = true;
     } else {
@@ -99,45 +96,52 @@ class RobotNode {
     }
   }
 
-  void on_sense(const ::lcm::ReceiveBuffer* buffer, const std::string& channel) {
+  void on_sense(const BusMessage& m) {
     sense_t msg;
-    if (!decode_or_report(buffer, channel, msg)) return;
+    if (!decode_or_report(m, msg)) return;
     last_heard_us_ = wall_us();
     SenseFrame frame;
     try {
       frame = from_lcm(msg);
+      if (frame.frame < 0 || frame.frame > kMaxFrame || frame.utime != frame_start_utime(frame.frame))
+        throw MalformedMessage(m.channel + ": frame " + std::to_string(frame.frame) + " at " +
+                               std::to_string(frame.utime) + " us is not a frame of a match");
     } catch (const MalformedMessage& e) {
       report_malformed(e.what());
       return;
     }
     const RobotSense* mine = frame.find(robot_.id());
-    if (!joined_ || !mine || frame.frame <= last_frame_) return; // not ours yet, or a repeat
+    if (!joined_ || !mine || frame.frame < last_frame_) return; // not ours yet, or an old frame
+    if (frame.frame == last_frame_) {
+      // The world sent the frame again: our answer was lost, or is on its way. Answer
+      // again with the same bytes (computing it again would tick the behaviour twice).
+      if (!last_act_.empty()) bus_.publish_sealed(act_channel_, last_act_);
+      return;
+    }
     last_frame_ = frame.frame;
     const RobotAct act = robot_.step(frame, *mine);
     publish_snapshot(frame.frame);
-    const act_t out = to_lcm(act, frame.utime, instance_);
-    lcm_.publish(act_channel_, &out);
+    last_act_ = bus_.publish(act_channel_, to_lcm(act, frame.utime, instance_));
   }
 
   /// Before the act, so a recording world logs the snapshot ahead of the answer.
   void publish_snapshot(int64_t frame) {
     if (def_.snapshot_every <= 0 || !robot_.behaviour_stats().ticked_last_step) return;
     if (behaviour_ticks_++ % def_.snapshot_every != 0) return;
-    const blackboard_snapshot_t msg = to_snapshot(robot_.behaviour_view(), robot_.id(), frame);
-    lcm_.publish(snapshot_channel_, &msg);
+    bus_.publish(snapshot_channel_, to_snapshot(robot_.behaviour_view(), robot_.id(), frame));
   }
 
-  void on_game(const ::lcm::ReceiveBuffer* buffer, const std::string& channel) {
+  void on_game(const BusMessage& m) {
     game_state_t msg;
-    if (!decode_or_report(buffer, channel, msg)) return;
+    if (!decode_or_report(m, msg)) return;
     last_heard_us_ = wall_us();
     if (msg.state == game_state_t::FINISHED && joined_) exit_ = RobotExit::kMatchOver;
   }
 
   template <typename Msg>
-  bool decode_or_report(const ::lcm::ReceiveBuffer* buffer, const std::string& channel, Msg& msg) {
+  bool decode_or_report(const BusMessage& m, Msg& msg) {
     try {
-      decode(buffer->data, static_cast<int>(buffer->data_size), channel, msg);
+      decode(m.payload, static_cast<int>(m.payload_size), m.channel, msg);
       return true;
     } catch (const MalformedMessage& e) {
       report_malformed(e.what());
@@ -152,7 +156,12 @@ class RobotNode {
   robot::Robot& robot_;
   const RobotNodeDef& def_;
   std::ostream& log_;
-  ::lcm::LCM lcm_;
+  // A day of play at 30 Hz is far beyond any match; a frame number past it is forged or
+  // corrupt (and frame_start_utime() of it would overflow).
+  static constexpr int64_t kMaxFrame = int64_t{30} * 3600 * 24;
+
+  Bus bus_;
+  std::vector<uint8_t> last_act_; ///< the last answer as sent, for a repeated frame
   std::string act_channel_;
   std::string snapshot_channel_;
   int64_t behaviour_ticks_ = 0;

@@ -51,6 +51,12 @@ void write_summary_json(const std::string& path, const sim::Match& match, const 
       << "  \"truth_hash\": \"" << transport::hex_hash(s.truth_hash) << "\",\n"
       << "  \"malformed\": " << s.malformed << ",\n"
       << "  \"stale\": " << s.stale << ",\n"
+      << "  \"future\": " << s.future << ",\n"
+      << "  \"duplicates\": " << s.duplicates << ",\n"
+      << "  \"implausible\": " << s.implausible << ",\n"
+      << "  \"unauthenticated\": " << s.unauthenticated << ",\n"
+      << "  \"handler_failures\": " << s.handler_failures << ",\n"
+      << "  \"resent_senses\": " << s.resent_senses << ",\n"
       << "  \"interrupted\": " << (s.interrupted ? "true" : "false") << ",\n"
       << "  \"ball\": {\"x_mm\": " << truth.ball.x_mm << ", \"y_mm\": " << truth.ball.y_mm << "},\n"
       << "  \"robots\": [";
@@ -82,8 +88,11 @@ void print_summary(const sim::Match& match, const transport::RunSummary& s) {
               << " rad, " << (r.active ? "active" : "INACTIVE") << ", answered " << m->frames_answered
               << ", missed " << m->frames_missed << "\n";
   }
-  if (s.malformed || s.stale)
-    std::cout << "  malformed messages ignored: " << s.malformed << ", late answers dropped: " << s.stale << "\n";
+  if (s.malformed || s.stale || s.future || s.unauthenticated || s.handler_failures)
+    std::cout << "  messages dropped: malformed " << s.malformed << " (implausible " << s.implausible << ", future "
+              << s.future << "), late " << s.stale << ", unauthenticated " << s.unauthenticated
+              << ", failed " << s.handler_failures << "\n";
+  if (s.resent_senses) std::cout << "  senses sent again to late robots: " << s.resent_senses << "\n";
 }
 
 } // namespace
@@ -95,7 +104,7 @@ int main(int argc, char** argv) {
   uint64_t seed = 1;
   double duration_s = -1;
   int robots = -1;
-  std::string gamecontroller;
+  std::string gamecontroller, secret_file;
 
   po::options_description options(
       "sim_world: plays a match in the Box2D world with robot_shim processes over LCM.\n"
@@ -112,6 +121,11 @@ int main(int argc, char** argv) {
     ("join-timeout", po::value(&node.join_timeout_s)->default_value(node.join_timeout_s), "wall seconds to wait for the robots to join")
     ("seed", po::value(&seed)->default_value(seed), "random seed: the camera noise, false negatives and falls all draw from it")
     ("lcm-url", po::value(&node.lcm_url)->default_value(node.lcm_url), "LCM provider URL")
+    ("secret-file", po::value(&secret_file),
+     "the match secret (hex) every message is authenticated with; default: $TOUCHLINE_MATCH_SECRET. "
+     "Every program of the match needs the same one")
+    ("resend-ms", po::value(&node.resend_ms)->default_value(node.resend_ms),
+     "wall milliseconds after which a frame's sense goes out again to robots that have not answered")
     ("summary", po::value(&node.summary_path), "write a JSON summary of the match to this path")
     ("gamecontroller", po::value(&gamecontroller),
      "take the game from the official SPL GameController's UDP packets (versions 15 and 18) on [ADDRESS:]PORT, e.g. 127.0.0.1:3838, instead of the built-in referee")
@@ -130,6 +144,8 @@ int main(int argc, char** argv) {
     node.pacing = parse_mode(mode);
     if (node.speed <= 0) throw po::error("--speed must be > 0");
     if (node.robot_timeout_ms <= 0) throw po::error("--robot-timeout-ms must be > 0");
+    if (node.resend_ms <= 0) throw po::error("--resend-ms must be > 0");
+    node.key = transport::load_match_key(secret_file);
     node.progress = !vm.count("quiet");
     if (duration_s > 0) overrides.push_back("match.duration_s=" + std::to_string(duration_s));
     else if (vm.count("duration")) throw po::error("--duration must be > 0");
@@ -145,6 +161,9 @@ int main(int argc, char** argv) {
     std::cerr << "sim_world: " << e.what() << " (see --help)\n";
     return kUsageError;
   } catch (const ConfigError& e) {
+    std::cerr << "sim_world: " << e.what() << "\n";
+    return kUsageError;
+  } catch (const std::invalid_argument& e) { // the match secret
     std::cerr << "sim_world: " << e.what() << "\n";
     return kUsageError;
   }

@@ -10,13 +10,12 @@
 #include <stdexcept>
 #include <thread>
 
-#include <lcm/lcm-cpp.hpp>
-
 #include "touchline/game_state_t.hpp"
 #include "touchline/hash.hpp"
 #include "touchline/join_reply_t.hpp"
 #include "touchline/join_t.hpp"
 #include "touchline/match_event_t.hpp"
+#include "touchline/lcm/bus.hpp"
 #include "touchline/lcm/match_recorder.hpp"
 #include "touchline/robot_status_t.hpp"
 #include "touchline/sim/lockstep.hpp"
@@ -69,15 +68,13 @@ world_truth_t to_msg(const sim::TruthFrame& truth) {
 class WorldNode {
  public:
   WorldNode(sim::Match& match, const WorldNodeDef& def, std::ostream& log)
-      : match_(match), def_(def), log_(log), lcm_(def.lcm_url) {
-    if (!lcm_.good())
-      throw std::runtime_error("cannot open LCM at " + def.lcm_url +
-                               " (is a multicast route on lo? see README, Networking)");
-    lcm_.subscribe(kJoinChannel, &WorldNode::on_join, this);
-    lcm_.subscribe(kActChannelPattern, &WorldNode::on_act, this);
+      : match_(match), def_(def), log_(log),
+        bus_(def.lcm_url, def.key, [this](const std::string& what) { rejected(what); }) {
+    bus_.subscribe(kJoinChannel, [this](const BusMessage& m) { on_join(m); });
+    bus_.subscribe(kActChannelPattern, [this](const BusMessage& m) { on_act(m); });
     if (!def.log_path.empty()) {
       recorder_ = std::make_unique<MatchRecorder>(def.log_path);
-      lcm_.subscribe(kSnapshotChannelPattern, &WorldNode::on_snapshot, this);
+      bus_.subscribe(kSnapshotChannelPattern, [this](const BusMessage& m) { record(m); });
     }
   }
 
@@ -99,6 +96,8 @@ class WorldNode {
       run_frame(start_us);
     }
     summary_.interrupted = g_stop;
+    summary_.unauthenticated = bus_.counters().unauthenticated;
+    summary_.handler_failures = bus_.counters().handler_failures;
     summary_.frames = match_.frame();
     summary_.sim_s = static_cast<double>(match_.utime()) * 1e-6;
     summary_.wall_s = static_cast<double>(wall_us() - start_us) * 1e-6;
@@ -117,7 +116,7 @@ class WorldNode {
         throw std::runtime_error("only " + std::to_string(match_.roster().members().size()) + " of " +
                                  std::to_string(def_.robots) + " robots joined within " +
                                  std::to_string(static_cast<int>(def_.join_timeout_s)) + " s");
-      lcm_.handleTimeout(50);
+      bus_.handle(50);
     }
   }
 
@@ -140,14 +139,17 @@ class WorldNode {
 
   void run_frame(int64_t start_us) {
     poll_gamecontroller();
-    publish(kSenseChannel, to_lcm(match_.sense()));
-    if (def_.pacing != Pacing::kFree) wait_for_answers();
+    bus_.drain(); // joins and answers that came meanwhile, whatever the robots are doing
+    const std::vector<uint8_t> sense = publish(kSenseChannel, to_lcm(match_.sense()));
+    if (def_.pacing != Pacing::kFree) wait_for_answers(sense);
     if (def_.pacing != Pacing::kLockstep) pace(start_us);
     match_.advance();
     const auto bytes = publish(kTruthChannel, to_msg(match_.truth()));
     publish_events();
     if (recorder_ && !recorder_->error().empty()) throw std::runtime_error(recorder_->error());
-    truth_hash_.add(bytes.data(), bytes.size());
+    // The hash covers the encoding, not the tag: the same seed gives the same hash whatever
+    // the match secret.
+    truth_hash_.add(bytes.data(), bytes.size() - kTagBytes);
     summary_.truth_hash = truth_hash_.value();
     if (match_.frame() % kFramesPerSecond == 0) {
       publish_game_state(false);
@@ -161,11 +163,25 @@ class WorldNode {
     }
   }
 
-  void wait_for_answers() {
-    barrier_.begin(match_.frame(), match_.active_robots(), wall_us(), def_.robot_timeout_ms * 1000);
-    for (int64_t now = wall_us(); !barrier_.complete(now); now = wall_us()) {
-      const int64_t wait_ms = (barrier_.remaining_us(now) + 999) / 1000;
-      lcm_.handleTimeout(static_cast<int>(std::max<int64_t>(1, wait_ms)));
+  /// Waits for this frame's answers. The sense goes out again to whoever is late every
+  /// resend_ms, so a lost packet (sense or act: a robot answers a repeated frame with its
+  /// answer again) costs milliseconds, not the timeout. With no robot active (all of them
+  /// timed out at once) the world waits for every robot on the field, so that any of them
+  /// can come back instead of the match racing on without anyone.
+  void wait_for_answers(const std::vector<uint8_t>& sense_wire) {
+    std::vector<RobotId> expected = match_.active_robots();
+    if (expected.empty()) expected = match_.robots_on_field();
+    const int64_t resend_us = def_.resend_ms * 1000;
+    int64_t now = wall_us();
+    barrier_.begin(match_.frame(), expected, now, def_.robot_timeout_ms * 1000);
+    for (int64_t next_resend = now + resend_us; !barrier_.complete(now); now = wall_us()) {
+      if (now >= next_resend) {
+        bus_.publish_sealed(kSenseChannel, sense_wire);
+        ++summary_.resent_senses;
+        next_resend = now + resend_us;
+      }
+      const int64_t wait_us = std::min(barrier_.remaining_us(now), next_resend - now);
+      bus_.handle(static_cast<int>(std::max<int64_t>(1, (wait_us + 999) / 1000)));
     }
     for (RobotId id : barrier_.missing()) {
       match_.time_out(id);
@@ -181,30 +197,28 @@ class WorldNode {
     const double frame_end_sim_us = static_cast<double>(frame_start_utime(match_.frame() + 1));
     const int64_t due = start_us + static_cast<int64_t>(frame_end_sim_us / def_.speed);
     for (int64_t now = wall_us(); now < due && !g_stop; now = wall_us())
-      lcm_.handleTimeout(static_cast<int>(std::max<int64_t>(1, (due - now) / 1000)));
+      bus_.handle(static_cast<int>(std::max<int64_t>(1, (due - now) / 1000)));
   }
 
-  /// Publishes with a pre-sized buffer and records it; returns the encoded bytes.
+  /// Publishes and records; returns the bytes as sent (encoding, then tag).
   template <typename Msg>
   std::vector<uint8_t> publish(const char* channel, const Msg& msg) {
-    std::vector<uint8_t> buffer(static_cast<size_t>(msg.getEncodedSize()));
-    msg.encode(buffer.data(), 0, static_cast<int>(buffer.size()));
-    lcm_.publish(channel, buffer.data(), static_cast<unsigned>(buffer.size()));
-    if (recorder_) recorder_->record(channel, buffer.data(), static_cast<int>(buffer.size()), match_.utime());
-    return buffer;
+    std::vector<uint8_t> wire = bus_.publish(channel, msg);
+    if (recorder_) recorder_->record(channel, wire.data(), static_cast<int>(wire.size()), match_.utime());
+    return wire;
   }
 
-  void record(const ::lcm::ReceiveBuffer* buffer, const std::string& channel) {
-    if (recorder_) recorder_->record(channel, buffer->data, static_cast<int>(buffer->data_size), match_.utime());
+  /// The log holds each message as it was on the wire, tag included.
+  void record(const BusMessage& m) {
+    if (recorder_) recorder_->record(m.channel, m.wire, static_cast<int>(m.wire_size), match_.utime());
   }
 
-  void on_snapshot(const ::lcm::ReceiveBuffer* buffer, const std::string& channel) { record(buffer, channel); }
-
-  void on_join(const ::lcm::ReceiveBuffer* buffer, const std::string& channel) {
-    record(buffer, channel);
+  void on_join(const BusMessage& m) {
+    record(m);
+    const std::string& channel = m.channel;
     join_t msg;
     try {
-      decode(buffer->data, static_cast<int>(buffer->data_size), channel, msg);
+      decode(m.payload, static_cast<int>(m.payload_size), channel, msg);
     } catch (const MalformedMessage& e) {
       malformed(e.what());
       return;
@@ -227,12 +241,13 @@ class WorldNode {
     }
   }
 
-  void on_act(const ::lcm::ReceiveBuffer* buffer, const std::string& channel) {
-    record(buffer, channel);
+  void on_act(const BusMessage& m) {
+    record(m);
+    const std::string& channel = m.channel;
     act_t msg;
     RobotAct act;
     try {
-      decode(buffer->data, static_cast<int>(buffer->data_size), channel, msg);
+      decode(m.payload, static_cast<int>(m.payload_size), channel, msg);
       act = from_lcm(msg);
       if (channel != act_channel(act.id))
         throw MalformedMessage(channel + ": carries an act of " + sim::describe(act.id));
@@ -250,6 +265,17 @@ class WorldNode {
       case sim::ActOutcome::kStale:
         ++summary_.stale;
         break;
+      case sim::ActOutcome::kFuture:
+        ++summary_.future;
+        malformed(channel + ": answers frame " + std::to_string(act.frame) + ", which has not been sensed yet");
+        break;
+      case sim::ActOutcome::kDuplicate:
+        ++summary_.duplicates; // a repeated answer to a repeated sense: expected, harmless
+        break;
+      case sim::ActOutcome::kImplausible:
+        ++summary_.implausible;
+        malformed(channel + ": moves a foot or the head further than a robot can in one tick; refused");
+        break;
       case sim::ActOutcome::kUnknown:
         if (unknown_.insert(msg.instance).second)
           log_ << "sim_world: ignoring answers from a " << sim::describe(act.id)
@@ -260,6 +286,11 @@ class WorldNode {
 
   void malformed(const std::string& what) {
     if (summary_.malformed++ < kMaxMalformedReports) log_ << "sim_world: ignored malformed message: " << what << "\n" << std::flush;
+  }
+
+  /// A message the bus refused (no valid tag) or whose handler failed.
+  void rejected(const std::string& what) {
+    if (rejected_reports_++ < kMaxMalformedReports) log_ << "sim_world: " << what << "\n" << std::flush;
   }
 
   void report(RobotId id, int8_t state, const std::string& detail) {
@@ -324,7 +355,8 @@ class WorldNode {
   sim::Match& match_;
   const WorldNodeDef& def_;
   std::ostream& log_;
-  ::lcm::LCM lcm_;
+  Bus bus_;
+  int64_t rejected_reports_ = 0;
   sim::FrameBarrier barrier_;
   std::unique_ptr<MatchRecorder> recorder_;
   std::optional<GameControllerReceiver> gamecontroller_;

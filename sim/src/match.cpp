@@ -117,15 +117,35 @@ std::vector<RobotId> Match::active_robots() const {
   return ids;
 }
 
+bool plausible(const RobotAct& act) {
+  if (act.motion_ticks < 0 || act.motion_ticks > kMaxTicksPerFrame) return false;
+  const auto within = [](float value, float limit) { return std::isfinite(value) && std::fabs(value) <= limit; };
+  for (int i = 0; i < act.motion_ticks; ++i)
+    for (const FootMotion& foot : {act.left[static_cast<size_t>(i)], act.right[static_cast<size_t>(i)]})
+      if (!within(std::hypot(foot.dx_mm, foot.dy_mm), kMaxFootTravelPerTickMm) ||
+          !within(foot.dtheta_rad, kMaxFootTurnPerTickRad))
+        return false;
+  return within(act.head_yaw_rad, kMaxHeadAngleRad) && within(act.head_pitch_rad, kMaxHeadAngleRad);
+}
+
+std::vector<RobotId> Match::robots_on_field() const {
+  std::vector<RobotId> ids;
+  for (const auto& [id, robot] : on_field_) ids.push_back(id);
+  return ids;
+}
+
 ActOutcome Match::apply(const RobotAct& act, int64_t instance, bool accept_late) {
   Member* member = roster_.find(act.id);
   auto robot = on_field_.find(act.id);
   if (!member || member->instance != instance || robot == on_field_.end()) return ActOutcome::kUnknown;
-  const bool on_time = act.frame == frame_;
-  if (!on_time && !(accept_late && act.frame < frame_)) return ActOutcome::kStale;
+  if (act.frame > frame_) return ActOutcome::kFuture;
+  if (act.frame < frame_ && !accept_late) return ActOutcome::kStale;
+  if (act.frame <= member->answered_frame) return ActOutcome::kDuplicate;
+  if (!plausible(act)) return ActOutcome::kImplausible;
 
   const bool rejoined = !member->active;
   member->active = true;
+  member->answered_frame = act.frame;
   ++member->frames_answered;
   member->behaviour_cpu_us_sum += act.behaviour_cpu_us;
   member->behaviour_cpu_us_max = std::max(member->behaviour_cpu_us_max, act.behaviour_cpu_us);
@@ -157,7 +177,7 @@ void Match::record_localisation_error(const RobotAct& act, Member& member) const
 void Match::time_out(RobotId id) {
   if (Member* member = roster_.find(id)) {
     member->active = false;
-    ++member->frames_missed;
+    if (member->answered_frame == frame_) member->answered_frame = frame_ - 1; // its answer is dropped
   }
   if (auto robot = on_field_.find(id); robot != on_field_.end()) robot->second.pending.clear();
 }
@@ -181,6 +201,8 @@ void Match::advance() {
     }
     world_.step(motions);
   }
+  for (const auto& [id, robot] : on_field_)
+    if (Member* member = roster_.find(id); member->answered_frame != frame_) ++member->frames_missed;
   ++frame_;
   judge();
 }

@@ -3,7 +3,7 @@ import math
 
 import pytest
 
-from touchline_harness import (LCM_URL, nominal_distance, robot_entry, start_robot, start_world,
+from touchline_harness import (LCM_URL, sealed, nominal_distance, robot_entry, start_robot, start_world,
                                walk_def)
 from truth_listener import TruthListener
 
@@ -106,7 +106,54 @@ def test_a_killed_shim_is_reported_and_the_match_goes_on_and_it_may_rejoin(tmp_p
     assert survivor["frames_answered"] == summary["frames"] == 240
     returned = robot_entry(summary, 0, 2)
     assert returned["active"] and returned["frames_missed"] >= 1
-    assert returned["frames_answered"] + returned["frames_missed"] <= summary["frames"]
+    # Every frame counts once: answered, or stepped without its answer while it was dead.
+    assert returned["frames_answered"] + returned["frames_missed"] == summary["frames"]
+
+
+def test_when_every_robot_stops_at_once_the_world_waits_and_they_come_back(tmp_path):
+    import signal
+    match = start_world(tmp_path, 2, 4.0, "--robot-timeout-ms", "200")
+    robots = [start_robot(match, 0, 1, "walk", forward=100), start_robot(match, 1, 1, "walk", forward=100)]
+    match.world.wait_for_line("kick-off")
+    for robot in robots:
+        robot.popen.send_signal(signal.SIGSTOP)
+    match.world.wait_for_line("team 0 player 1 no answer within 200 ms")
+    match.world.wait_for_line("team 1 player 1 no answer within 200 ms")
+    for robot in robots:
+        robot.popen.send_signal(signal.SIGCONT)
+    match.world.wait_for_line("team 0 player 1 answered again")
+    match.world.wait_for_line("team 1 player 1 answered again")
+    summary = match.finish()
+    for team in (0, 1):
+        entry = robot_entry(summary, team, 1)
+        assert entry["active"], entry
+        assert entry["frames_answered"] + entry["frames_missed"] == summary["frames"] == 120
+        assert entry["frames_missed"] < 30, entry  # the world waited for them instead of racing on
+
+
+@pytest.fixture
+def lossy_loopback():
+    """Drops one in ten of the match's UDP packets in this test's network namespace (nftables)."""
+    import subprocess
+    rules = ["add table inet touchline_loss",
+             'add chain inet touchline_loss input { type filter hook input priority 0 ; }',
+             "add rule inet touchline_loss input udp dport 7667 numgen random mod 10 == 0 drop"]
+    for rule in rules:
+        subprocess.run(["nft", *rule.split()], check=True)
+    yield
+    subprocess.run(["nft", "delete", "table", "inet", "touchline_loss"], check=True)
+
+
+def test_a_lost_sense_or_answer_is_sent_again_and_no_frame_is_missed(tmp_path, lossy_loopback):
+    match = start_world(tmp_path, 2, 3.0)
+    start_robot(match, 0, 1, "walk", forward=100)
+    start_robot(match, 1, 1, "walk", forward=100)
+    summary = match.finish()
+    for team in (0, 1):
+        entry = robot_entry(summary, team, 1)
+        assert entry["frames_answered"] == summary["frames"] == 90, entry
+        assert entry["frames_missed"] == 0, entry
+    assert summary["resent_senses"] > 0  # packets were lost and the world noticed
 
 
 def test_second_shim_claiming_a_robot_is_refused(tmp_path):
@@ -151,16 +198,45 @@ def test_malformed_messages_are_reported_and_ignored(tmp_path):
     start_robot(match, 0, 1, "walk", forward=100)
     match.world.wait_for_line("kick-off")
     bus = lcm.LCM(LCM_URL)
-    bus.publish("TL_ACT_0_1", b"\x00garbage")
+    # Authenticated (made with the match's secret) but malformed: decoded, refused, counted.
+    bus.publish("TL_ACT_0_1", sealed("TL_ACT_0_1", b"\x00garbage"))
     bad = act_t()
     bad.team, bad.player, bad.motion_ticks = 0, 9, 0
     bad.team_message = b""  # lcm-gen 1.3.1's Python default for byte arrays is a str
-    bus.publish("TL_ACT_0_9", bad.encode())
+    bus.publish("TL_ACT_0_9", sealed("TL_ACT_0_9", bad.encode()))
     match.world.wait_for_line("cannot decode as act_t")
     match.world.wait_for_line("no such robot (team 0, player 9)")
     summary = match.finish()
     assert summary["malformed"] == 2
     assert robot_entry(summary, 0, 1)["frames_answered"] == summary["frames"]
+
+
+def test_messages_not_made_with_the_match_secret_are_dropped_unread(tmp_path):
+    import lcm
+    from touchline import act_t, game_state_t
+
+    match = start_world(tmp_path, 1, 3.0, "--mode", "realtime")
+    shim = start_robot(match, 0, 1, "walk", forward=100)
+    match.world.wait_for_line("kick-off")
+    bus = lcm.LCM(LCM_URL)
+    # A forger who has seen the traffic but not the secret: a valid act with no tag, one
+    # with a tag made with another secret, a FINISHED for every robot, and a tag lifted
+    # from another channel.
+    forged = act_t()
+    forged.team, forged.player, forged.motion_ticks = 0, 1, 0
+    forged.team_message = b""
+    bus.publish("TL_ACT_0_1", forged.encode())
+    bus.publish("TL_ACT_0_1", sealed("TL_ACT_0_1", forged.encode(), secret_hex="ab" * 32))
+    finished = game_state_t()
+    finished.state = game_state_t.FINISHED
+    bus.publish("TL_GAME", sealed("TL_GAME", finished.encode(), secret_hex="cd" * 32))
+    bus.publish("TL_ACT_0_1", sealed("TL_ACT_0_2", forged.encode()))
+    match.world.wait_for_line("without a valid tag")
+    summary = match.finish()
+    assert summary["unauthenticated"] == 3
+    assert summary["malformed"] == 0
+    assert robot_entry(summary, 0, 1)["frames_answered"] == summary["frames"]
+    assert shim.wait() == 0  # played to the end: the forged FINISHED did not stop it
 
 
 def test_realtime_mode_paces_and_free_mode_never_waits(tmp_path):

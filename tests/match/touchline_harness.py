@@ -6,9 +6,12 @@ so LCM multicast stays on this namespace's loopback and parallel tests never mee
 from __future__ import annotations
 
 import configparser
+import hashlib
+import hmac
 import json
 import os
 import queue
+import secrets
 import subprocess
 import threading
 import time
@@ -22,6 +25,15 @@ ROBOT_SHIM = BUILD / "robot_shim" / "robot_shim"
 WALK_INI = ROOT / "config" / "walk.ini"
 LCM_URL = "udpm://239.255.76.67:7667?ttl=0"
 WAIT_S = 60  # the longest any step of a test waits before failing
+# Every program of a match authenticates its messages with one secret; the children inherit it.
+os.environ.setdefault("TOUCHLINE_MATCH_SECRET", secrets.token_hex(32))
+
+
+def sealed(channel: str, payload: bytes, secret_hex: str | None = None) -> bytes:
+    """`payload` with the tag the match bus requires (HMAC-SHA-256 over the channel, a zero
+    byte and the payload), made with this match's secret unless another is given."""
+    key = bytes.fromhex(secret_hex or os.environ["TOUCHLINE_MATCH_SECRET"])
+    return payload + hmac.new(key, channel.encode() + b"\0" + payload, hashlib.sha256).digest()
 
 
 class Proc:

@@ -74,7 +74,52 @@ TEST(Match, StaleAndUnknownActsAreIgnored) {
   EXPECT_EQ(match.apply(forward_act({0, 1}, 0, 3, 5.f), 9), ActOutcome::kStale);
   EXPECT_EQ(match.apply(forward_act({0, 1}, 1, 3, 5.f), 8), ActOutcome::kUnknown); // wrong instance
   EXPECT_EQ(match.apply(forward_act({0, 2}, 1, 3, 5.f), 9), ActOutcome::kUnknown); // never joined
-  EXPECT_EQ(match.apply(forward_act({0, 1}, 5, 3, 5.f), 9), ActOutcome::kStale);   // from the future
+  EXPECT_EQ(match.apply(forward_act({0, 1}, 5, 3, 5.f), 9), ActOutcome::kFuture);  // not sensed yet
+}
+
+TEST(Match, ASecondAnswerToAFrameIsADuplicateAndMovesNothing) {
+  sim::Match match(small_config());
+  match.join({0, 1}, 9, 0);
+  match.start();
+  const Pose2D start = match.sense().robots[0].truth;
+  const int ticks = match.sense().motion_ticks;
+  EXPECT_EQ(match.apply(forward_act({0, 1}, 0, ticks, 5.f), 9), ActOutcome::kApplied);
+  EXPECT_EQ(match.apply(forward_act({0, 1}, 0, ticks, 5.f), 9), ActOutcome::kDuplicate);
+  match.advance();
+  const Pose2D end = match.truth().robots[0].truth.body;
+  EXPECT_NEAR(std::hypot(end.x_mm - start.x_mm, end.y_mm - start.y_mm), 5.f * static_cast<float>(ticks), 0.05f);
+  EXPECT_EQ(match.roster().find({0, 1})->frames_answered, 1);
+}
+
+TEST(Match, FootMotionNoRobotCouldMakeIsRefused) {
+  sim::Match match(small_config());
+  match.join({0, 1}, 9, 0);
+  match.start();
+  EXPECT_EQ(match.apply(forward_act({0, 1}, 0, 3, 1e30f), 9), ActOutcome::kImplausible);
+  EXPECT_EQ(match.apply(forward_act({0, 1}, 0, 3, sim::kMaxFootTravelPerTickMm + 1.f), 9), ActOutcome::kImplausible);
+  RobotAct spinning = forward_act({0, 1}, 0, 3, 5.f);
+  spinning.left[1].dtheta_rad = 2 * sim::kMaxFootTurnPerTickRad;
+  EXPECT_EQ(match.apply(spinning, 9), ActOutcome::kImplausible);
+  RobotAct head = forward_act({0, 1}, 0, 3, 5.f);
+  head.head_pitch_rad = 10.f;
+  EXPECT_EQ(match.apply(head, 9), ActOutcome::kImplausible);
+  // A kick's fastest swing is well inside the limits.
+  EXPECT_EQ(match.apply(forward_act({0, 1}, 0, 3, 16.f), 9), ActOutcome::kApplied);
+}
+
+TEST(Match, EveryFrameSteppedWithoutARobotsAnswerCountsAsMissed) {
+  sim::Match match(small_config());
+  match.join({0, 1}, 9, 0);
+  match.join({0, 2}, 10, 0);
+  match.start();
+  for (int frame = 0; frame < 5; ++frame) {
+    EXPECT_EQ(match.apply(forward_act({0, 2}, frame, match.sense().motion_ticks, 1.f), 10), ActOutcome::kApplied);
+    if (frame == 0) match.time_out({0, 1});
+    match.advance();
+  }
+  EXPECT_EQ(match.roster().find({0, 1})->frames_missed, 5);
+  EXPECT_EQ(match.roster().find({0, 2})->frames_missed, 0);
+  EXPECT_EQ(match.roster().find({0, 2})->frames_answered, 5);
 }
 
 TEST(Match, FreeRunningAppliesLateAnswersLate) {

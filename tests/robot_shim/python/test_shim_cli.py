@@ -2,6 +2,7 @@
 a module that only fails at import is no usage error (the shim plays on, standing). The
 robot's data directory (--data-dir) is where a C++ behaviour finds its policy."""
 import os
+import secrets
 import subprocess
 import sys
 from pathlib import Path
@@ -17,6 +18,7 @@ ROBOT = ["--team", "0", "--player", "3"]
 def run(*args):
     # Without PYTHONDONTWRITEBYTECODE: the shim must keep from writing bytecode by itself.
     env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+    env.setdefault("TOUCHLINE_MATCH_SECRET", secrets.token_hex(32))
     return subprocess.run([str(ROBOT_SHIM), *map(str, args)], capture_output=True, text=True, timeout=60, env=env)
 
 

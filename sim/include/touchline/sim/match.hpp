@@ -39,11 +39,24 @@ struct TruthFrame {
 };
 
 enum class ActOutcome {
-  kApplied,  ///< taken for this frame
-  kRejoined, ///< taken, and the robot is active again after a timeout
-  kStale,    ///< for an earlier frame in lockstep (or a later one): ignored
-  kUnknown,  ///< from a robot or instance that has not joined: ignored
+  kApplied,     ///< taken for this frame
+  kRejoined,    ///< taken, and the robot is active again after a timeout
+  kStale,       ///< for an earlier frame in lockstep: ignored
+  kFuture,      ///< for a frame not yet sensed: ignored (no robot can answer it)
+  kDuplicate,   ///< a second answer to a frame already answered: ignored
+  kImplausible, ///< moves a foot or the head further than a body can (see kMaxFoot*): ignored
+  kUnknown,     ///< from a robot or instance that has not joined: ignored
 };
+
+/// Foot motion beyond these in one 10 ms tick is no robot's: an act asking for it is
+/// refused. Ten times a kick's peak swing (1.6 m/s, config/kick.ini) and a fast turn.
+constexpr float kMaxFootTravelPerTickMm = 100.f;
+constexpr float kMaxFootTurnPerTickRad = 0.5f;
+/// Head angles beyond these (either way) are no robot's.
+constexpr float kMaxHeadAngleRad = 3.1416f;
+
+/// Whether every foot motion and head angle of `act` is within the limits above.
+bool plausible(const RobotAct& act);
 
 class Match {
  public:
@@ -62,11 +75,14 @@ class Match {
   SenseFrame sense();
   /// Robots that must answer the current frame.
   std::vector<RobotId> active_robots() const;
+  /// Every robot on the field, active or not, in (team, player) order.
+  std::vector<RobotId> robots_on_field() const;
 
   /// Takes a robot's answer. `accept_late`: free-running mode, where an answer for an
   /// earlier frame still moves the robot, late.
   ActOutcome apply(const RobotAct& act, int64_t instance, bool accept_late = false);
-  /// The robot did not answer in time: it stands still and is inactive until it answers.
+  /// The robot did not answer in time: it stands still and is inactive until it answers;
+  /// an answer it gave this frame is dropped (the frame counts as missed).
   void time_out(RobotId id);
 
   /// Steps the world through the current frame's motion ticks (robots that may not move

@@ -21,7 +21,8 @@ struct Member {
   int pid = 0;
   bool active = true;        ///< answering frames; false after a timeout
   int64_t frames_answered = 0;
-  int64_t frames_missed = 0;
+  int64_t frames_missed = 0;       ///< frames the world stepped without this robot's answer
+  int64_t answered_frame = -1;     ///< the last frame whose answer was taken (-1: none)
   int64_t behaviour_cpu_us_sum = 0; ///< over answered frames
   int64_t behaviour_cpu_us_max = 0;
   int64_t behaviour_cpu_us_mean() const { return frames_answered ? behaviour_cpu_us_sum / frames_answered : 0; }

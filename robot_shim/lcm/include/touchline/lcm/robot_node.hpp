@@ -6,12 +6,14 @@
 #include <string>
 
 #include "touchline/lcm/codec.hpp"
+#include "touchline/lcm/match_key.hpp"
 #include "touchline/robot/robot.hpp"
 
 namespace touchline::transport {
 
 struct RobotNodeDef {
   std::string lcm_url = kDefaultUrl;
+  MatchKey key;                ///< the match secret every message is authenticated with
   double join_timeout_s = 60;  ///< wall seconds to wait for sim_world to accept the join
   double world_timeout_s = 30; ///< wall seconds of silence from sim_world before giving up
   int64_t instance = 0;        ///< random id of this process (0: pick one)

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "touchline/lcm/codec.hpp"
+#include "touchline/lcm/match_key.hpp"
 #include "touchline/lcm/gamecontroller_receiver.hpp"
 #include "touchline/sim/match.hpp"
 
@@ -22,9 +23,11 @@ enum class Pacing {
 
 struct WorldNodeDef {
   std::string lcm_url = kDefaultUrl;
+  MatchKey key;                  ///< the match secret every message is authenticated with
   Pacing pacing = Pacing::kLockstep;
   double speed = 1.0;            ///< real-time multiple for kRealtime and kFree
   int64_t robot_timeout_ms = 1000; ///< wall time a robot may take to answer a frame
+  int64_t resend_ms = 20;        ///< wall time after which the frame's sense goes out again to late robots
   int robots = 8;                ///< joins to wait for before kick-off
   double join_timeout_s = 30;    ///< wall time to wait for them
   std::string summary_path;      ///< write a JSON summary here at the end (empty: none)
@@ -41,8 +44,14 @@ struct RunSummary {
   double sim_s = 0;
   double wall_s = 0;
   uint64_t truth_hash = 0;  ///< FNV-1a over every published world_truth_t, in order
-  int64_t malformed = 0;    ///< messages that failed to decode or validate
+  int64_t malformed = 0;    ///< messages that failed to decode or validate (implausible and future answers too)
   int64_t stale = 0;        ///< answers that came too late (lockstep) and were dropped
+  int64_t future = 0;       ///< answers to frames not yet sensed: dropped
+  int64_t duplicates = 0;   ///< second answers to an answered frame (to a repeated sense): dropped
+  int64_t implausible = 0;  ///< answers moving a foot or the head beyond any robot: dropped
+  int64_t unauthenticated = 0;  ///< messages without a valid tag (not from this match): dropped
+  int64_t handler_failures = 0; ///< messages whose handling failed: dropped
+  int64_t resent_senses = 0;    ///< senses sent again to late robots
   bool interrupted = false; ///< stopped by SIGINT/SIGTERM
 };
 

@@ -1,0 +1,102 @@
+#pragma once
+// The match bus: LCM with every message authenticated. Both programs talk through it
+// and nothing else of theirs includes LCM's own headers.
+//
+// On the wire a message is its LCM encoding followed by a 32-byte tag, HMAC-SHA-256 over
+// the channel name, a zero byte and the encoding, keyed with the match secret. LCM's
+// decoders (C++, Python, Java: lcm-spy, lcm-logplayer, the viewer) read the encoding and
+// ignore what follows, so every tool still decodes the match. A message whose tag does
+// not verify is counted and dropped before any handler sees it.
+//
+// Built on LCM's C API: the programs run clean under AddressSanitizer with it, which they
+// did not with Debian's LCM 1.3.1 C++ wrapper (issue #13, item 13).
+//
+// Handlers never let an exception out: one that throws is counted and reported, and the
+// bus goes on (an exception must never unwind through liblcm's C frames).
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "touchline/lcm/match_key.hpp"
+
+typedef struct _lcm_t lcm_t;
+
+namespace touchline::transport {
+
+/// Bytes of the authentication tag after each message's LCM encoding.
+constexpr size_t kTagBytes = 32;
+
+/// One authenticated message, as a handler sees it.
+struct BusMessage {
+  const std::string& channel;
+  const uint8_t* payload;   ///< the LCM encoding (tag removed)
+  size_t payload_size;
+  const uint8_t* wire;      ///< payload followed by its tag, as received (for recorders)
+  size_t wire_size;
+};
+
+/// What the bus refused or failed at, for the summaries and the tests.
+struct BusCounters {
+  int64_t unauthenticated = 0;  ///< messages whose tag did not verify (or with no tag): dropped
+  int64_t handler_failures = 0; ///< handlers that threw: the message was dropped
+};
+
+class Bus {
+ public:
+  using Handler = std::function<void(const BusMessage&)>;
+  /// Receives one line per refused message or failed handler (the caller bounds how many
+  /// it prints).
+  using Reporter = std::function<void(const std::string&)>;
+
+  /// Opens LCM at `url`. Throws std::runtime_error (one line) if LCM cannot.
+  Bus(const std::string& url, MatchKey key, Reporter report = {});
+  ~Bus();
+  Bus(const Bus&) = delete;
+  Bus& operator=(const Bus&) = delete;
+
+  /// Calls `handler` for every authenticated message on channels matching `channel_regex`.
+  void subscribe(const std::string& channel_regex, Handler handler);
+
+  /// Sends `payload` (an LCM encoding) with its tag; returns the bytes as sent.
+  std::vector<uint8_t> publish(const std::string& channel, const uint8_t* payload, size_t size);
+  /// Encodes `msg` and sends it; returns the bytes as sent (the encoding is all but the
+  /// last kTagBytes).
+  template <typename Msg>
+  std::vector<uint8_t> publish(const std::string& channel, const Msg& msg) {
+    std::vector<uint8_t> encoded(static_cast<size_t>(msg.getEncodedSize()));
+    msg.encode(encoded.data(), 0, static_cast<int>(encoded.size()));
+    return publish(channel, encoded.data(), encoded.size());
+  }
+
+  /// Sends again bytes that publish() returned (a repeat, as sent the first time).
+  void publish_sealed(const std::string& channel, const std::vector<uint8_t>& wire);
+
+  /// Waits up to `timeout_ms` (0: not at all) for a message and dispatches what came.
+  /// Returns whether one was handled. Throws std::runtime_error if LCM fails.
+  bool handle(int timeout_ms);
+  /// Dispatches every message already waiting, without waiting for more.
+  void drain();
+
+  const BusCounters& counters() const { return counters_; }
+
+  /// `payload` followed by its tag for `channel` (what publish() sends).
+  std::vector<uint8_t> seal(const std::string& channel, const uint8_t* payload, size_t size) const;
+  /// Whether `wire` ends in the right tag for `channel`.
+  bool verify(const std::string& channel, const uint8_t* wire, size_t size) const;
+
+ private:
+  struct Subscription;
+  static void on_message(const void* rbuf, const char* channel, void* user);
+  void dispatch(Subscription& subscription, const std::string& channel, const uint8_t* wire, size_t size);
+  void tag(const std::string& channel, const uint8_t* payload, size_t size, uint8_t* out) const;
+
+  MatchKey key_;
+  Reporter report_;
+  lcm_t* lcm_ = nullptr;
+  std::vector<std::unique_ptr<Subscription>> subscriptions_;
+  BusCounters counters_;
+};
+
+} // namespace touchline::transport
