@@ -74,6 +74,16 @@ void kill_and_reap(pid_t pid);
 /// Round trip from one ping to all `responders` pongs, over forked responder processes.
 FloorResult measure_floor(const Options& opt, int responders);
 /// Real-time factor of sim_world + `robots` robot_shim processes in lockstep.
+/// What authenticating the bus costs per lockstep frame (auth_cost.cpp), microseconds.
+struct AuthCost {
+  int robots = 0;
+  size_t sense_bytes = 0, answer_bytes = 0;
+  double seal_sense_us = 0, verify_sense_us = 0, seal_answer_us = 0, verify_answer_us = 0;
+  double critical_path_us = 0; ///< added to one lockstep round (shims work side by side)
+  double total_cpu_us = 0;     ///< summed over every process
+};
+AuthCost measure_auth_cost(int robots, int frames);
+
 LockstepResult measure_lockstep(const Options& opt, int robots, const std::string& dir, double timeout_s);
 
 }  // namespace touchline::bench

@@ -53,7 +53,7 @@ std::string fixed(double x, int precision) {
 }
 
 void print_report(const Options& opt, long nproc, const std::vector<FloorResult>& floors,
-                  const std::vector<LockstepResult>& runs) {
+                  const std::vector<LockstepResult>& runs, const AuthCost& auth) {
   std::ostream& out = std::cout;
   out << "\nTouchline lockstep benchmark  (" << nproc << " CPUs, " << opt.lcm_url << ")\n\n";
   out << "LCM round-trip floor: ping all responders, wait for every pong (" << opt.rounds << " rounds after "
@@ -90,11 +90,22 @@ void print_report(const Options& opt, long nproc, const std::vector<FloorResult>
           << fixed(cap_rtf(f.median_us), 1) << "x real time";
   for (const auto& r : runs)
     if (r.robots == 8) out << "; measured 8-robot RTF " << fixed(r.median_rtf, 1) << "x";
+  out << "\n\nBus authentication (HMAC-SHA-256 tag on every message), " << auth.robots << " robots, sense "
+      << auth.sense_bytes << " B, answer " << auth.answer_bytes << " B:\n"
+      << "  seal sense " << fixed(auth.seal_sense_us, 2) << " us, verify sense " << fixed(auth.verify_sense_us, 2)
+      << " us, seal answer " << fixed(auth.seal_answer_us, 2) << " us, verify answer "
+      << fixed(auth.verify_answer_us, 2) << " us\n"
+      << "  per frame: " << fixed(auth.critical_path_us, 1) << " us on the round's critical path, "
+      << fixed(auth.total_cpu_us, 1) << " us of CPU over all processes";
+  for (const auto& f : floors)
+    if (f.responders == auth.robots)
+      out << "; " << fixed(100 * auth.critical_path_us / f.median_us, 1) << "% of the " << f.responders
+          << "-responder round-trip floor measured above";
   out << "\n" << std::flush;
 }
 
 void write_json(const std::string& path, const Options& opt, long nproc, const std::vector<FloorResult>& floors,
-                const std::vector<LockstepResult>& runs) {
+                const std::vector<LockstepResult>& runs, const AuthCost& auth) {
   std::ofstream out(path);
   if (!out) throw BenchError("cannot write " + path);
   out << std::setprecision(6) << "{\n";
@@ -122,6 +133,8 @@ void write_json(const std::string& path, const Options& opt, long nproc, const s
     if (c == '"' || c == '\\') url += '\\';
     url += c;
   }
+  out << "  \"auth_critical_path_us_" << auth.robots << "\": " << auth.critical_path_us << ",\n"
+      << "  \"auth_total_cpu_us_" << auth.robots << "\": " << auth.total_cpu_us << ",\n";
   out << "  \"duration_s\": " << opt.duration_s << ",\n"
       << "  \"repeats\": " << opt.repeat << ",\n"
       << "  \"rounds\": " << opt.rounds << ",\n"
@@ -219,9 +232,10 @@ int main(int argc, char** argv) {
                 << " s simulated...\n";
       runs.push_back(measure_lockstep(opt, n, dir, run_timeout_s));
     }
-    print_report(opt, nproc, floors, runs);
+    const AuthCost auth = measure_auth_cost(8, 20000);
+    print_report(opt, nproc, floors, runs, auth);
     if (!opt.json_path.empty()) {
-      write_json(opt.json_path, opt, nproc, floors, runs);
+      write_json(opt.json_path, opt, nproc, floors, runs, auth);
       std::cout << "wrote " << opt.json_path << "\n";
     }
     if (opt.keep_logs) {
