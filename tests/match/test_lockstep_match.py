@@ -131,6 +131,15 @@ def test_when_every_robot_stops_at_once_the_world_waits_and_they_come_back(tmp_p
         assert entry["frames_missed"] < 30, entry  # the world waited for them instead of racing on
 
 
+def test_when_the_world_is_killed_each_shim_says_so_and_exits(tmp_path):
+    match = start_world(tmp_path, 1, 30.0, "--mode", "realtime")
+    shim = start_robot(match, 0, 1, "walk", world_timeout_s=1, forward=100)
+    match.world.wait_for_line("kick-off")
+    match.world.kill()
+    assert shim.wait(timeout=10) == 1
+    assert any("sim_world silent for 1 s, giving up" in line for line in shim.stderr), shim.stderr
+
+
 @pytest.fixture
 def lossy_loopback():
     """Drops one in ten of the match's UDP packets in this test's network namespace (nftables)."""

@@ -123,9 +123,10 @@ def start_world(tmp_path: Path, robots: int, duration: float, *extra: str) -> Ma
     return Match(world=world, summary_path=summary)
 
 
-def start_robot(match: Match, team: int, player: int, behaviour: str = "stand", **params) -> Proc:
+def start_robot(match: Match, team: int, player: int, behaviour: str = "stand", world_timeout_s: float = 20,
+                **params) -> Proc:
     args = [ROBOT_SHIM, "--team", team, "--player", player, "--behaviour", behaviour,
-            "--walk-config", WALK_INI, "--lcm-url", LCM_URL, "--world-timeout", 20]
+            "--walk-config", WALK_INI, "--lcm-url", LCM_URL, "--world-timeout", world_timeout_s]
     for key, value in params.items():
         args += ["--param", f"{key}={value}"]
     proc = Proc(f"robot_shim {team}/{player}", args)
