@@ -131,6 +131,24 @@ def test_when_every_robot_stops_at_once_the_world_waits_and_they_come_back(tmp_p
         assert entry["frames_missed"] < 30, entry  # the world waited for them instead of racing on
 
 
+def test_a_sense_from_far_in_the_future_does_not_silence_a_shim(tmp_path):
+    import lcm
+    from touchline import robot_sense_t, sense_t
+
+    match = start_world(tmp_path, 1, 3.0, "--mode", "realtime")
+    shim = start_robot(match, 0, 1, "walk", forward=100)
+    match.world.wait_for_line("kick-off")
+    forged = sense_t()  # tagged with the match's own secret: only the frame is wrong
+    forged.frame, forged.utime, forged.motion_ticks = 2 ** 62, 0, 3
+    mine = robot_sense_t()
+    mine.team, mine.player, mine.active = 0, 1, True
+    forged.robots, forged.num_robots = [mine], 1
+    lcm.LCM(LCM_URL).publish("TL_SENSE", sealed("TL_SENSE", forged.encode()))
+    shim.wait_for_line("is not a frame of a match")
+    summary = match.finish()
+    assert robot_entry(summary, 0, 1)["frames_answered"] == summary["frames"] == 90
+
+
 def test_when_the_world_is_killed_each_shim_says_so_and_exits(tmp_path):
     match = start_world(tmp_path, 1, 30.0, "--mode", "realtime")
     shim = start_robot(match, 0, 1, "walk", world_timeout_s=1, forward=100)
