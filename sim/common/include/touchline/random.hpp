@@ -7,7 +7,7 @@
 // taken from one shared sequence. So the order in which robots' answers arrive, a robot
 // joining late, or one robot seeing one more object never shifts another's draws.
 #include <cstdint>
-#include <type_traits>
+#include <limits>
 
 // threefry.h first: MicroURNG.hpp uses the compiler-feature macros it defines.
 #include <Random123/threefry.h>
@@ -18,7 +18,7 @@ namespace touchline {
 /// Uniform in [0, 1) from the top 53 bits of one 64-bit draw.
 template <typename Generator>
 double uniform01(Generator& rng) {
-  static_assert(std::is_same_v<typename Generator::result_type, uint64_t>, "needs 64 random bits per draw");
+  static_assert(std::numeric_limits<typename Generator::result_type>::digits == 64, "needs 64 random bits per draw");
   return static_cast<double>(rng() >> 11) * 0x1.0p-53;
 }
 
