@@ -58,6 +58,8 @@ void write_summary_json(const std::string& path, const sim::Match& match, const 
       << "  \"handler_failures\": " << s.handler_failures << ",\n"
       << "  \"resent_senses\": " << s.resent_senses << ",\n"
       << "  \"interrupted\": " << (s.interrupted ? "true" : "false") << ",\n"
+      << "  \"comm\": {\"sent\": " << match.comm().sent() << ", \"delivered\": " << match.comm().delivered()
+      << ", \"lost\": " << match.comm().lost() << ", \"refused\": " << match.comm().refused() << "},\n"
       << "  \"ball\": {\"x_mm\": " << truth.ball.x_mm << ", \"y_mm\": " << truth.ball.y_mm << "},\n"
       << "  \"robots\": [";
   for (size_t i = 0; i < truth.robots.size(); ++i) {

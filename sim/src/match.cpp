@@ -15,22 +15,13 @@ namespace {
 constexpr size_t kMaxPendingTicks = 2 * kMaxTicksPerFrame;
 } // namespace
 
-namespace {
-
-/// The camera's and the radio's streams are seeded apart from the falls', so one never
-/// shifts another.
-constexpr uint64_t kPerceptionSeedSalt = 0x9e3779b97f4a7c15ull;
-constexpr uint64_t kCommSeedSalt = 0xc2b2ae3d27d4eb4full;
-
-} // namespace
-
 Match::Match(const WorldConfig& config, uint64_t seed)
     : config_(config),
-      rng_(seed),
+      seed_(seed),
       world_(config.field, config.physics, config.match.foot_separation_mm),
       roster_(config.match.team_size),
-      perception_(Field(config.field), config.perception, seed ^ kPerceptionSeedSalt),
-      comm_(config.comm, seed ^ kCommSeedSalt) {
+      perception_(Field(config.field), config.perception, seed),
+      comm_(config.comm, seed) {
   if (config.rules.referee)
     referee_.emplace(Field(config.field), config.rules, config.match.team_size, config.physics.ball_diameter_mm);
 }
@@ -97,8 +88,8 @@ SenseFrame Match::sense() {
     sense.truth = me.body;
     sense.ball_x_mm = ball.x_mm;
     sense.ball_y_mm = ball.y_mm;
-    sense.seen = perception_.observe(me, all, ball);
-    const SonarReading sonar = perception_.sonar(me, all);
+    sense.seen = perception_.observe(me, all, ball, frame_);
+    const SonarReading sonar = perception_.sonar(me, all, frame_);
     sense.sonar_left = sonar.left;
     sense.sonar_right = sonar.right;
     sense.penalised = penalised(id);
@@ -261,7 +252,10 @@ void Match::fall_after_push(RobotId pusher) {
     const float d = std::hypot(body.x_mm - at.x_mm, body.y_mm - at.y_mm);
     if (d < nearest) nearest = d, victim = &robot, victim_id = id;
   }
-  if (!victim || uniform01(rng_) >= config_.rules.fall_probability) return;
+  if (!victim) return;
+  auto draws = keyed_draws(seed_, DrawStream::kFall, frame_, draw_id(victim_id.team, victim_id.player),
+                           draw_id(pusher.team, pusher.player));
+  if (uniform01(draws) >= config_.rules.fall_probability) return;
   victim->fallen_until_utime = utime() + static_cast<int64_t>(config_.rules.getup_s * 1e6);
   victim->pending.clear();
   events_.push_back({utime(), MatchEvent::Kind::kFall, victim_id, victim_id.team, "fell, pushed"});

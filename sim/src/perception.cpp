@@ -20,18 +20,19 @@ constexpr double kTwoPi = 6.283185307179586476925;
 /// geometry exactly.
 float wrap_if_needed(float a) { return (a >= -kPi && a < kPi) ? a : normalise_angle(a); }
 
+/// Standard normal (Box-Muller, one pair of draws per number).
+double gaussian(KeyedDraws& draws) {
+  const double u1 = 1.0 - uniform01(draws); // (0, 1]: log is finite
+  const double u2 = uniform01(draws);
+  return std::sqrt(-2.0 * std::log(u1)) * std::cos(kTwoPi * u2);
+}
+
+uint32_t viewer_id(const Viewer& me) { return draw_id(me.id.team, me.id.player); }
+
 } // namespace
 
 Perception::Perception(const Field& field, const PerceptionDef& def, uint64_t seed)
-    : field_(field), def_(def), landmarks_(field_landmarks(field_)), rng_(seed) {}
-
-double Perception::uniform() { return uniform01(rng_); }
-
-double Perception::gaussian() {
-  const double u1 = 1.0 - uniform(); // (0, 1]: log is finite
-  const double u2 = uniform();
-  return std::sqrt(-2.0 * std::log(u1)) * std::cos(kTwoPi * u2);
-}
+    : field_(field), def_(def), landmarks_(field_landmarks(field_)), seed_(seed) {}
 
 bool Perception::hidden(const Viewer& me, const std::vector<Viewer>& robots, float x_mm, float y_mm) const {
   for (const Viewer& other : robots) {
@@ -41,17 +42,18 @@ bool Perception::hidden(const Viewer& me, const std::vector<Viewer>& robots, flo
   return false;
 }
 
-bool Perception::consider(const Viewer& me, const std::vector<Viewer>& robots, ObjectKind kind, int id, float x_mm,
-                          float y_mm, float miss_probability, bool can_be_hidden, std::vector<Observation>& out) {
-  // Draw first, always the same three numbers: see the determinism note in the header.
-  const double miss = uniform();
-  const double distance_z = gaussian();
-  const double bearing_z = gaussian();
-
+bool Perception::consider(const Viewer& me, const std::vector<Viewer>& robots, int64_t frame, ObjectKind kind, int id,
+                          float x_mm, float y_mm, float miss_probability, bool can_be_hidden,
+                          std::vector<Observation>& out) const {
   const auto s = sight(def_.camera, me.body, me.head_yaw_rad, me.head_pitch_rad, x_mm, y_mm);
   if (!s) return false;
   if (can_be_hidden && hidden(me, robots, x_mm, y_mm)) return false;
-  if (miss < miss_probability) return false;
+  // This object's own draws: (kind, id) names it among everything this viewer may see.
+  const auto object = (static_cast<uint32_t>(kind) << 16) | static_cast<uint32_t>(id);
+  auto draws = keyed_draws(seed_, DrawStream::kCamera, frame, viewer_id(me), object);
+  if (uniform01(draws) < miss_probability) return false;
+  const double distance_z = gaussian(draws);
+  const double bearing_z = gaussian(draws);
 
   const NoiseDef& n = def_.noise;
   const double distance = s->distance_mm;
@@ -72,17 +74,17 @@ bool Perception::consider(const Viewer& me, const std::vector<Viewer>& robots, O
 }
 
 std::vector<Observation> Perception::observe(const Viewer& me, const std::vector<Viewer>& robots,
-                                             const BallTruth& ball) {
+                                             const BallTruth& ball, int64_t frame) const {
   const NoiseDef& n = def_.noise;
   std::vector<Observation> out;
 
   const bool ball_seen =
-      consider(me, robots, ObjectKind::kBall, 0, ball.x_mm, ball.y_mm, n.ball_miss_probability, true, out);
-  // The phantom's numbers are drawn every frame too, used or not.
-  const double phantom = uniform();
-  const double phantom_across = uniform();
-  const double phantom_distance = uniform();
+      consider(me, robots, frame, ObjectKind::kBall, 0, ball.x_mm, ball.y_mm, n.ball_miss_probability, true, out);
+  auto phantom_draws = keyed_draws(seed_, DrawStream::kPhantomBall, frame, viewer_id(me));
+  const double phantom = uniform01(phantom_draws);
   if (!ball_seen && phantom < n.phantom_ball_probability) {
+    const double phantom_across = uniform01(phantom_draws);
+    const double phantom_distance = uniform01(phantom_draws);
     // Somewhere in the image, at most as far as the camera sees: a plausible false
     // detection, which a ball filter must learn to distrust.
     const float range = std::min(n.phantom_ball_max_distance_mm,
@@ -97,19 +99,19 @@ std::vector<Observation> Perception::observe(const Viewer& me, const std::vector
   }
 
   for (const Landmark& mark : landmarks_)
-    consider(me, robots, mark.kind, mark.id, mark.x_mm, mark.y_mm, n.landmark_miss_probability, true, out);
+    consider(me, robots, frame, mark.kind, mark.id, mark.x_mm, mark.y_mm, n.landmark_miss_probability, true, out);
 
   for (const Viewer& other : robots) {
     if (other.id == me.id) continue; // a robot never sees itself
     const ObjectKind kind = other.id.team == me.id.team ? ObjectKind::kTeammate : ObjectKind::kOpponent;
     // Robots are not occluded: a robot partly behind another still shows its head and arms.
-    consider(me, robots, kind, other.id.player, other.body.x_mm, other.body.y_mm, n.robot_miss_probability, false,
-             out);
+    consider(me, robots, frame, kind, other.id.player, other.body.x_mm, other.body.y_mm, n.robot_miss_probability,
+             false, out);
   }
   return out;
 }
 
-SonarReading Perception::sonar(const Viewer& me, const std::vector<Viewer>& robots) {
+SonarReading Perception::sonar(const Viewer& me, const std::vector<Viewer>& robots, int64_t frame) const {
   SonarReading reading;
   for (const Viewer& other : robots) {
     if (other.id == me.id) continue;
@@ -119,8 +121,8 @@ SonarReading Perception::sonar(const Viewer& me, const std::vector<Viewer>& robo
     for (const Landmark& mark : landmarks_)
       if (mark.kind == ObjectKind::kGoalPost) sonar_update(def_.sonar, me.body, mark.x_mm, mark.y_mm, reading);
   }
-  // Both numbers are drawn every call (see the header's determinism note).
-  const double left_z = gaussian(), right_z = gaussian();
+  auto draws = keyed_draws(seed_, DrawStream::kSonar, frame, viewer_id(me));
+  const double left_z = gaussian(draws), right_z = gaussian(draws);
   const double sd = def_.sonar_noise_sd_mm / static_cast<double>(def_.sonar.range_mm); // in fractions of the range
   auto noisy = [sd](float fraction, double z) {
     if (fraction >= 1.f) return fraction; // nothing seen: no echo to be noisy
@@ -131,14 +133,15 @@ SonarReading Perception::sonar(const Viewer& me, const std::vector<Viewer>& robo
   return reading;
 }
 
-std::vector<Percept> Perception::perceive(const std::vector<Viewer>& robots, const BallTruth& ball) {
+std::vector<Percept> Perception::perceive(const std::vector<Viewer>& robots, const BallTruth& ball,
+                                          int64_t frame) const {
   std::vector<Percept> percepts;
   percepts.reserve(robots.size());
   for (const Viewer& me : robots) {
     Percept p;
     p.id = me.id;
-    p.seen = observe(me, robots, ball);
-    p.sonar = sonar(me, robots);
+    p.seen = observe(me, robots, ball, frame);
+    p.sonar = sonar(me, robots, frame);
     percepts.push_back(std::move(p));
   }
   return percepts;

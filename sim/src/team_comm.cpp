@@ -21,7 +21,7 @@ void validate(const CommDef& d) {
   require_fraction("comm.loss_probability", d.loss_probability);
 }
 
-TeamComm::TeamComm(const CommDef& def, uint64_t seed) : def_(def), rng_(seed) {}
+TeamComm::TeamComm(const CommDef& def, uint64_t seed) : def_(def), seed_(seed) {}
 
 SendResult TeamComm::send(RobotId from, int64_t utime, const std::vector<uint8_t>& data,
                           const std::vector<RobotId>& team) {
@@ -40,11 +40,13 @@ SendResult TeamComm::send(RobotId from, int64_t utime, const std::vector<uint8_t
   const int64_t arrives = utime + static_cast<int64_t>(std::llround(def_.latency_ms * 1000.0));
   for (RobotId to : team) {
     if (to == from || to.team != from.team) continue;
-    if (uniform01(rng_) < def_.loss_probability) {
+    auto draws = keyed_draws(seed_, DrawStream::kTeamMessage, utime, draw_id(from.team, from.player),
+                             draw_id(to.team, to.player));
+    if (uniform01(draws) < def_.loss_probability) {
       ++lost_;
       continue;
     }
-    in_flight_[to].push_back({arrives, {from.player, utime, data}});
+    in_flight_[to].emplace(Arrival{arrives, from.player}, TeamMessageFrame{from.player, utime, data});
   }
   return SendResult::kSent;
 }
@@ -53,9 +55,10 @@ std::vector<TeamMessageFrame> TeamComm::receive(RobotId to, int64_t utime) {
   std::vector<TeamMessageFrame> arrived;
   auto queue = in_flight_.find(to);
   if (queue == in_flight_.end()) return arrived;
-  while (!queue->second.empty() && queue->second.front().arrives_utime <= utime) {
-    arrived.push_back(std::move(queue->second.front().message));
-    queue->second.pop_front();
+  auto& waiting = queue->second;
+  while (!waiting.empty() && waiting.begin()->first.first <= utime) {
+    arrived.push_back(std::move(waiting.begin()->second));
+    waiting.erase(waiting.begin());
     ++delivered_;
   }
   return arrived;

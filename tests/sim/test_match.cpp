@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 using namespace touchline;
 using sim::ActOutcome;
 
@@ -333,4 +335,64 @@ TEST(Match, PushingIsPenalisedAndThePushedRobotFallsThenGetsUp) {
   match.apply(forward_act({0, 1}, match.frame(), ticks_in_frame(match.frame()), 5.f), 1);
   match.advance();
   EXPECT_GT(match.truth().robots[0].truth.body.x_mm, lying.x_mm);
+}
+
+namespace {
+
+/// Everything a 4 v 4 match tells its robots and the world's state, frame by frame, with
+/// the robots' answers (team messages every frame the radio allows) applied in the order
+/// `order(frame, ids)` gives.
+template <typename Order>
+std::vector<std::vector<int64_t>> play_in_order(Order order) {
+  sim::WorldConfig config;
+  config.match.team_size = 4;
+  config.rules.referee = false;
+  config.comm.loss_probability = 0.4f;
+  config.comm.max_rate_hz = 10;
+  sim::Match match(config, 21);
+  std::vector<RobotId> ids;
+  for (int team = 0; team < 2; ++team)
+    for (int player = 1; player <= 4; ++player) ids.push_back({team, player});
+  for (size_t i = 0; i < ids.size(); ++i) match.join(ids[i], static_cast<int64_t>(i) + 1, 0);
+  match.start();
+  std::vector<std::vector<int64_t>> frames;
+  for (int f = 0; f < 90; ++f) {
+    const SenseFrame sense = match.sense();
+    std::vector<int64_t> told;
+    for (const RobotSense& robot : sense.robots) {
+      told.push_back(static_cast<int64_t>(robot.seen.size()));
+      for (const TeamMessageFrame& m : robot.messages) {
+        told.insert(told.end(), {m.player, m.sent_utime});
+        told.insert(told.end(), m.data.begin(), m.data.end());
+      }
+    }
+    for (const RobotId& id : order(f, ids)) {
+      const auto index = static_cast<int64_t>(std::find(ids.begin(), ids.end(), id) - ids.begin());
+      RobotAct act = forward_act(id, match.frame(), ticks_in_frame(match.frame()), 2.f + static_cast<float>(index));
+      act.team_message = {static_cast<uint8_t>(id.team), static_cast<uint8_t>(id.player), static_cast<uint8_t>(f)};
+      match.apply(act, index + 1);
+    }
+    match.advance();
+    told.push_back(static_cast<int64_t>(match.world().state_hash()));
+    frames.push_back(told);
+  }
+  frames.push_back({match.comm().sent(), match.comm().lost(), match.comm().delivered()});
+  return frames;
+}
+
+} // namespace
+
+TEST(Match, TheOrderInWhichAnswersArriveChangesNothing) {
+  // Over UDP the robots' answers arrive in any order; the match must be the same.
+  const auto in_id_order = play_in_order([](int, std::vector<RobotId> ids) { return ids; });
+  const auto shuffled = play_in_order([](int frame, std::vector<RobotId> ids) {
+    std::rotate(ids.begin(), ids.begin() + (3 * frame) % static_cast<int>(ids.size()), ids.end());
+    if (frame % 2 == 0) std::reverse(ids.begin(), ids.end());
+    return ids;
+  });
+  ASSERT_EQ(in_id_order.size(), shuffled.size());
+  for (size_t f = 0; f < in_id_order.size(); ++f) ASSERT_EQ(in_id_order[f], shuffled[f]) << "frame " << f;
+  const auto& comm = in_id_order.back();
+  EXPECT_GT(comm[1], 0);       // messages were lost
+  EXPECT_GT(comm[2], comm[1]); // and more delivered
 }

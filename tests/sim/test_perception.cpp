@@ -69,7 +69,7 @@ TEST(Perception, WithoutNoiseTheObservationsAreTheGeometry) {
   // corners (33.7 degrees off) and the centre-line ends (90) are outside the 60-degree view.
   Perception perception(kField, exact(), 1);
   const Viewer me = viewer(0, 1, 0, 0, 0);
-  const auto seen = perception.observe(me, {me}, ball_at(1500, 0));
+  const auto seen = perception.observe(me, {me}, ball_at(1500, 0), 0);
   ASSERT_EQ(seen.size(), 4u);
 
   EXPECT_EQ(seen[0].kind, ObjectKind::kBall);
@@ -102,7 +102,7 @@ TEST(Perception, WithoutNoiseEveryObservationIsBitForBitTheCameraModel) {
   // opponent and both penalty marks are all in view.
   const Viewer me = viewer(1, 3, 1500, 300, kPi, 0.3f, -0.3f);
   const std::vector<Viewer> robots{me, viewer(1, 2, 500, 0, 0), viewer(0, 4, 0, -800, 1)};
-  const auto seen = perception.observe(me, robots, ball_at(700, -200));
+  const auto seen = perception.observe(me, robots, ball_at(700, -200), 0);
   ASSERT_EQ(seen.size(), 5u);
   EXPECT_TRUE(find(seen, ObjectKind::kPenaltyMark, 0) && find(seen, ObjectKind::kPenaltyMark, 1));
   EXPECT_TRUE(find(seen, ObjectKind::kTeammate, 2) && find(seen, ObjectKind::kOpponent, 4));
@@ -129,9 +129,9 @@ TEST(Perception, CornerBeyondTheRangeIsNotSeen) {
   // Corner 2 (3000, 2000) is 1414 mm away, straight ahead: the head down sees only 1000 mm.
   Perception perception(kField, exact(), 1);
   const Viewer down = viewer(0, 1, 2000, 1000, kPi / 4, 0, kHeadDown);
-  EXPECT_FALSE(find(perception.observe(down, {down}, ball_at(0, 0)), ObjectKind::kFieldCorner, 2));
+  EXPECT_FALSE(find(perception.observe(down, {down}, ball_at(0, 0), 0), ObjectKind::kFieldCorner, 2));
   const Viewer up = viewer(0, 1, 2000, 1000, kPi / 4, 0, kHeadUp);
-  const auto seen = perception.observe(up, {up}, ball_at(0, 0));
+  const auto seen = perception.observe(up, {up}, ball_at(0, 0), 0);
   const Observation* corner = find(seen, ObjectKind::kFieldCorner, 2);
   ASSERT_TRUE(corner);
   EXPECT_NEAR(corner->distance_mm, 1414.2136f, 1e-2f);
@@ -143,7 +143,7 @@ TEST(Perception, NothingBehindTheRobotIsSeen) {
   // team 0's posts and penalty mark, ahead, are.
   Perception perception(kField, exact(), 1);
   const Viewer me = viewer(0, 1, 0, 0, kPi);
-  const auto seen = perception.observe(me, {me, viewer(1, 1, 1000, 0, 0)}, ball_at(1000, 0));
+  const auto seen = perception.observe(me, {me, viewer(1, 1, 1000, 0, 0)}, ball_at(1000, 0), 0);
   EXPECT_EQ(count(seen, ObjectKind::kBall), 0);
   EXPECT_EQ(count(seen, ObjectKind::kOpponent), 0);
   EXPECT_TRUE(find(seen, ObjectKind::kGoalPost, 0));
@@ -157,7 +157,7 @@ TEST(Perception, HeadYawTurnsTheView) {
   // seen straight along the head, at heading +90 degrees; the ball ahead of the body is not.
   Perception perception(kField, exact(), 1);
   const Viewer me = viewer(0, 1, 0, 0, 0, kPi / 2);
-  const auto seen = perception.observe(me, {me}, ball_at(1000, 0));
+  const auto seen = perception.observe(me, {me}, ball_at(1000, 0), 0);
   EXPECT_EQ(count(seen, ObjectKind::kBall), 0);
   const Observation* end = find(seen, ObjectKind::kCentreLineEnd, 1);
   ASSERT_TRUE(end);
@@ -170,21 +170,21 @@ TEST(Perception, ARobotHidesTheBallBehindItButNotBesideIt) {
   const Viewer me = viewer(0, 1, -800, 0, 0);
   const BallTruth ball = ball_at(1000, 0);
   // In the line of sight, nearer than the ball: hidden. The robot itself is still seen.
-  auto seen = perception.observe(me, {me, viewer(1, 1, 0, 0, kPi)}, ball);
+  auto seen = perception.observe(me, {me, viewer(1, 1, 0, 0, kPi)}, ball, 0);
   EXPECT_EQ(count(seen, ObjectKind::kBall), 0);
   EXPECT_TRUE(find(seen, ObjectKind::kOpponent, 1));
   EXPECT_FALSE(find(seen, ObjectKind::kPenaltyMark, 1)); // (1200, 0): behind it too
   EXPECT_TRUE(find(seen, ObjectKind::kGoalPost, 2));     // sight line passes 145 mm from it
   // 100 mm off the line (inside the 120 mm body): hidden; 300 mm off: seen.
-  EXPECT_EQ(count(perception.observe(me, {me, viewer(1, 1, 0, 100, 0)}, ball), ObjectKind::kBall), 0);
-  EXPECT_EQ(count(perception.observe(me, {me, viewer(1, 1, 0, 300, 0)}, ball), ObjectKind::kBall), 1);
+  EXPECT_EQ(count(perception.observe(me, {me, viewer(1, 1, 0, 100, 0)}, ball, 0), ObjectKind::kBall), 0);
+  EXPECT_EQ(count(perception.observe(me, {me, viewer(1, 1, 0, 300, 0)}, ball, 0), ObjectKind::kBall), 1);
   // Beyond the ball: the ball is in front of it.
-  EXPECT_EQ(count(perception.observe(me, {me, viewer(1, 1, 1500, 0, 0)}, ball), ObjectKind::kBall), 1);
+  EXPECT_EQ(count(perception.observe(me, {me, viewer(1, 1, 1500, 0, 0)}, ball, 0), ObjectKind::kBall), 1);
 
   PerceptionDef see_through = exact();
   see_through.occluder_radius_mm = 0;
   Perception xray(kField, see_through, 1);
-  EXPECT_EQ(count(xray.observe(me, {me, viewer(1, 1, 0, 0, kPi)}, ball), ObjectKind::kBall), 1);
+  EXPECT_EQ(count(xray.observe(me, {me, viewer(1, 1, 0, 0, kPi)}, ball, 0), ObjectKind::kBall), 1);
 }
 
 TEST(Occlusion, BodyDiscGeometry) {
@@ -212,7 +212,7 @@ TEST(Perception, TeammatesAndOpponentsAreLabelledAndNoRobotSeesItself) {
       viewer(1, 3, 0, -500, kPi),      // another opponent
       viewer(0, 3, -3000, 0, 0),       // a teammate behind me: not seen
   };
-  const auto seen = perception.observe(me, robots, ball_at(5000, 0));
+  const auto seen = perception.observe(me, robots, ball_at(5000, 0), 0);
   ASSERT_TRUE(find(seen, ObjectKind::kOpponent, 1));
   ASSERT_TRUE(find(seen, ObjectKind::kOpponent, 3));
   ASSERT_TRUE(find(seen, ObjectKind::kTeammate, 2));
@@ -227,7 +227,7 @@ TEST(Perception, TeammatesAndOpponentsAreLabelledAndNoRobotSeesItself) {
   EXPECT_EQ(robot_kinds, (std::vector<ObjectKind>{ObjectKind::kOpponent, ObjectKind::kTeammate,
                                                   ObjectKind::kOpponent}));
   // Seen by the opponent facing me: the labels turn round.
-  const auto theirs = perception.observe(robots[0], robots, ball_at(5000, 0));
+  const auto theirs = perception.observe(robots[0], robots, ball_at(5000, 0), 0);
   EXPECT_TRUE(find(theirs, ObjectKind::kOpponent, 1));  // me, 1000 mm ahead of it
   EXPECT_TRUE(find(theirs, ObjectKind::kOpponent, 3));  // my teammate 3, 2000 mm ahead of it
   EXPECT_FALSE(find(theirs, ObjectKind::kTeammate, 1)); // itself
@@ -239,18 +239,18 @@ TEST(Perception, SonarHearsARobotAheadInTheCorridor) {
   Perception perception(kField, def, 1);
   const Viewer me = viewer(0, 1, 0, 0, kPi / 2); // facing +y
   // 500 mm ahead and 50 mm to its right (+x is right when facing +y).
-  SonarReading r = perception.sonar(me, {me, viewer(1, 1, 50, 500, 0)});
+  SonarReading r = perception.sonar(me, {me, viewer(1, 1, 50, 500, 0)}, 0);
   EXPECT_FLOAT_EQ(r.right, 0.5f);
   EXPECT_FLOAT_EQ(r.left, 1.f);
   // On the left, nearer than another on the left: the nearer wins.
-  r = perception.sonar(me, {viewer(0, 2, -40, 700, 0), me, viewer(1, 2, -60, 300, 0)});
+  r = perception.sonar(me, {viewer(0, 2, -40, 700, 0), me, viewer(1, 2, -60, 300, 0)}, 0);
   EXPECT_FLOAT_EQ(r.left, 0.3f);
   EXPECT_FLOAT_EQ(r.right, 1.f);
   // Behind, beyond the range, or outside the corridor: nothing. Alone: nothing.
-  r = perception.sonar(me, {me, viewer(1, 1, 0, -500, 0), viewer(1, 2, 0, 1200, 0), viewer(1, 3, 300, 500, 0)});
+  r = perception.sonar(me, {me, viewer(1, 1, 0, -500, 0), viewer(1, 2, 0, 1200, 0), viewer(1, 3, 300, 500, 0)}, 0);
   EXPECT_FLOAT_EQ(r.left, 1.f);
   EXPECT_FLOAT_EQ(r.right, 1.f);
-  r = perception.sonar(me, {me});
+  r = perception.sonar(me, {me}, 0);
   EXPECT_FLOAT_EQ(r.left, 1.f);
   EXPECT_FLOAT_EQ(r.right, 1.f);
 }
@@ -259,23 +259,23 @@ TEST(Perception, SonarHearsGoalPostsWhenConfigured) {
   // 600 mm in front of post 2 (3000, 700), facing it.
   const Viewer me = viewer(0, 1, 2400, 700, 0);
   Perception hears(kField, exact(), 1);
-  EXPECT_FLOAT_EQ(hears.sonar(me, {me}).right, 0.6f);
+  EXPECT_FLOAT_EQ(hears.sonar(me, {me}, 0).right, 0.6f);
   PerceptionDef deaf_def = exact();
   deaf_def.sonar_sees_goal_posts = false;
   Perception deaf(kField, deaf_def, 1);
-  EXPECT_FLOAT_EQ(deaf.sonar(me, {me}).right, 1.f);
+  EXPECT_FLOAT_EQ(deaf.sonar(me, {me}, 0).right, 1.f);
 }
 
-TEST(Perception, PerceiveIsObserveThenSonarPerRobotInOrder) {
+TEST(Perception, PerceiveIsObserveAndSonarPerRobotInOrder) {
   const std::vector<Viewer> robots{viewer(0, 1, -500, 0, 0), viewer(1, 1, 500, 50, kPi), viewer(0, 2, 0, 800, -1)};
   const BallTruth ball = ball_at(0, 0);
   Perception together(kField, PerceptionDef{}, 99);
   Perception apart(kField, PerceptionDef{}, 99);
-  const auto percepts = together.perceive(robots, ball);
+  const auto percepts = together.perceive(robots, ball, 0);
   ASSERT_EQ(percepts.size(), robots.size());
   for (size_t i = 0; i < robots.size(); ++i) {
-    const auto seen = apart.observe(robots[i], robots, ball);
-    const SonarReading sonar = apart.sonar(robots[i], robots);
+    const auto seen = apart.observe(robots[i], robots, ball, 0);
+    const SonarReading sonar = apart.sonar(robots[i], robots, 0);
     EXPECT_EQ(percepts[i].id, robots[i].id);
     ASSERT_EQ(percepts[i].seen.size(), seen.size());
     for (size_t k = 0; k < seen.size(); ++k) {

@@ -3,6 +3,7 @@
 // noise; and determinism: the same seed gives the same observations bit for bit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -59,7 +60,7 @@ TEST(PerceptionNoise, FalseNegativeRatesMatchTheConfiguredProbabilities) {
   const int n = 10000;
   int ball = 0, mark = 0, robot = 0;
   for (int i = 0; i < n; ++i) {
-    const auto seen = perception.observe(me, robots, ball_at(1000, -200));
+    const auto seen = perception.observe(me, robots, ball_at(1000, -200), i);
     ball += !find(seen, ObjectKind::kBall);
     mark += !find(seen, ObjectKind::kPenaltyMark, 1);
     robot += !find(seen, ObjectKind::kOpponent, 1);
@@ -80,7 +81,7 @@ TEST(PerceptionNoise, DistanceNoiseFollowsTheLinearSigmaModel) {
   for (float distance : {1000.f, 3000.f}) {
     std::vector<double> errors;
     for (int i = 0; i < n; ++i) {
-      const auto seen = perception.observe(me, {me}, ball_at(-2000 + distance, 0));
+      const auto seen = perception.observe(me, {me}, ball_at(-2000 + distance, 0), i);
       errors.push_back(find(seen, ObjectKind::kBall)->distance_mm - distance);
     }
     const double sigma = 10 + 0.05 * distance;
@@ -104,7 +105,7 @@ TEST(PerceptionNoise, BearingNoiseGrowsWithDistance) {
     std::vector<double> headings;
     bool image_x_follows = true;
     for (int i = 0; i < n; ++i) {
-      const auto seen = perception.observe(me, {me}, ball_at(-2000 + distance, 0));
+      const auto seen = perception.observe(me, {me}, ball_at(-2000 + distance, 0), i);
       const Observation* ball = find(seen, ObjectKind::kBall);
       headings.push_back(ball->heading_rad);
       // The image coordinate moves with the bearing: 1/60 of the image per degree.
@@ -131,7 +132,7 @@ TEST(PerceptionNoise, ImageXStaysInTheImageAtTheEdge) {
   const float a = deg2rad(29);
   int clamped = 0;
   for (int i = 0; i < 2000; ++i) {
-    const auto seen = perception.observe(me, {me}, ball_at(1000 * std::cos(a), 1000 * std::sin(a)));
+    const auto seen = perception.observe(me, {me}, ball_at(1000 * std::cos(a), 1000 * std::sin(a)), i);
     const Observation* ball = find(seen, ObjectKind::kBall);
     ASSERT_TRUE(ball);
     EXPECT_GE(ball->image_x, 0.f);
@@ -151,7 +152,7 @@ TEST(PerceptionNoise, PhantomBallsAppearOnlyWithoutTheRealOneAndInView) {
   const int n = 10000;
   int phantoms = 0;
   for (int i = 0; i < n; ++i) {
-    const auto seen = perception.observe(me, {me}, ball_at(-1000, 0)); // real ball behind
+    const auto seen = perception.observe(me, {me}, ball_at(-1000, 0), i); // real ball behind
     const Observation* ball = find(seen, ObjectKind::kBall);
     if (!ball) continue;
     ++phantoms;
@@ -163,7 +164,8 @@ TEST(PerceptionNoise, PhantomBallsAppearOnlyWithoutTheRealOneAndInView) {
   // With the real ball in view and never missed, each frame has exactly one ball.
   for (int i = 0; i < 1000; ++i) {
     int balls = 0;
-    for (const Observation& o : perception.observe(me, {me}, ball_at(800, 200))) balls += o.kind == ObjectKind::kBall;
+    for (const Observation& o : perception.observe(me, {me}, ball_at(800, 200), n + i))
+      balls += o.kind == ObjectKind::kBall;
     ASSERT_EQ(balls, 1);
   }
 }
@@ -178,7 +180,7 @@ TEST(PerceptionNoise, SonarNoiseHasTheConfiguredSigma) {
   std::vector<double> left;
   const int n = 20000;
   for (int i = 0; i < n; ++i) {
-    const SonarReading r = perception.sonar(me, robots);
+    const SonarReading r = perception.sonar(me, robots, i);
     left.push_back(r.left * 1000.0);
     ASSERT_EQ(r.right, 1.f); // nothing on the right: no noise
   }
@@ -219,7 +221,7 @@ std::vector<std::vector<uint32_t>> play(uint64_t seed, int frames) {
     const float t = static_cast<float>(f) * 0.01f;
     const std::vector<Viewer> robots{viewer(0, 1, -1500 + 100 * t, 0, t), viewer(0, 2, -500, 600, -0.5f, t, 0.3f),
                                      viewer(1, 1, 900, -100, kPi - t), viewer(1, 2, 300, 300, kPi, -0.3f, 0.5f)};
-    out.push_back(bits(perception.perceive(robots, ball_at(200 * t, -50))));
+    out.push_back(bits(perception.perceive(robots, ball_at(200 * t, -50), f)));
   }
   return out;
 }
@@ -233,9 +235,24 @@ TEST(PerceptionNoise, SameSeedSameObservationsBitForBitOtherSeedOthers) {
   EXPECT_GT(values, 300u * 20); // the scene really sees things
 }
 
+TEST(PerceptionNoise, EachFramesDrawsAreTheSameInWhateverOrderFramesAreAsked) {
+  // Keyed draws: frame f's noise is a function of (seed, f, viewer, object), not of what
+  // was drawn before it.
+  PerceptionDef def;
+  def.noise.phantom_ball_probability = 0.2f;
+  def.sonar_noise_sd_mm = 15;
+  const Perception forwards(kField, def, 5), backwards(kField, def, 5);
+  const std::vector<Viewer> robots{viewer(0, 1, -1000, 0, 0), viewer(1, 1, 1000, 300, kPi)};
+  const BallTruth ball = ball_at(0, 100);
+  std::vector<std::vector<uint32_t>> a, b(40);
+  for (int f = 0; f < 40; ++f) a.push_back(bits(forwards.perceive(robots, ball, f)));
+  for (int f = 39; f >= 0; --f) b[static_cast<size_t>(f)] = bits(backwards.perceive(robots, ball, f));
+  EXPECT_EQ(a, b);
+  EXPECT_NE(a[0], a[1]); // and frames differ
+}
+
 TEST(PerceptionNoise, OneRobotsHeadDoesNotShiftAnothersNoise) {
-  // Every candidate costs the same draws seen or not, so robot 2 looking elsewhere
-  // (seeing other things) leaves robot 1's noisy view, drawn after it, unchanged.
+  // Robot 2 looking elsewhere (seeing other things) leaves robot 1's noisy view unchanged.
   PerceptionDef def;
   def.noise.phantom_ball_probability = 0.1f;
   Perception looking(kField, def, 77), away(kField, def, 77);
@@ -245,11 +262,37 @@ TEST(PerceptionNoise, OneRobotsHeadDoesNotShiftAnothersNoise) {
   for (int f = 0; f < 50; ++f) {
     const std::vector<Viewer> robots_a{viewer(1, 2, 1000, 200, kPi), first};
     const std::vector<Viewer> robots_b{viewer(1, 2, 1000, 200, kPi, 1.5f, -0.6f), first};
-    const auto a = looking.perceive(robots_a, ball), b = away.perceive(robots_b, ball);
+    const auto a = looking.perceive(robots_a, ball, f), b = away.perceive(robots_b, ball, f);
     frames_robot2_saw_differently += bits({a[0]}) != bits({b[0]});
     EXPECT_EQ(bits({a[1]}), bits({b[1]}));
   }
   EXPECT_EQ(frames_robot2_saw_differently, 50); // it looks at the ball and robot 1, or away
+}
+
+TEST(PerceptionNoise, ARobotJoiningChangesNoOnesNoiseButWhatItAdds) {
+  // A newcomer in robot 1's view, clear of its sight lines to the ball and the landmarks:
+  // robot 1 sees one more object, and everything else exactly as before.
+  PerceptionDef def;
+  def.noise.phantom_ball_probability = 0.1f;
+  def.sonar_noise_sd_mm = 15;
+  Perception alone(kField, def, 31), joined(kField, def, 31);
+  const BallTruth ball = ball_at(500, 0);
+  const Viewer me = viewer(1, 2, 0, 0, 0);
+  const Viewer newcomer = viewer(0, 3, 2000, -1000, 0); // 27 degrees right, 2.2 m off
+  int newcomer_seen = 0;
+  for (int f = 0; f < 50; ++f) {
+    const Percept before = alone.perceive({me}, ball, f)[0];
+    Percept after = joined.perceive({newcomer, me}, ball, f)[1]; // sorts before me, as in a match
+    const auto it = std::find_if(after.seen.begin(), after.seen.end(),
+                                 [](const Observation& o) { return o.kind == ObjectKind::kOpponent; });
+    if (it != after.seen.end()) {
+      EXPECT_EQ(it->id, 3);
+      after.seen.erase(it);
+      ++newcomer_seen;
+    }
+    EXPECT_EQ(bits({before}), bits({after})) << "frame " << f;
+  }
+  EXPECT_GT(newcomer_seen, 40); // seen but for the robot miss probability
 }
 
 } // namespace

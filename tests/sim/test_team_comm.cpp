@@ -74,3 +74,57 @@ TEST(TeamComm, SameSeedSameLosses) {
   EXPECT_EQ(a.lost(), b.lost());
   EXPECT_NE(a.lost(), c.lost());
 }
+
+TEST(TeamComm, LossesAndDeliveriesDoNotDependOnTheOrderOfSending) {
+  // Three teammates send in the same frames, handed in in opposite orders: each delivery is
+  // lost or not by its own keyed draw, and what arrives together comes in sender order.
+  CommDef def;
+  def.loss_probability = 0.3f;
+  TeamComm forwards(def, 9), backwards(def, 9);
+  const std::vector<RobotId> senders = {{0, 1}, {0, 2}, {0, 3}};
+  for (int i = 0; i < 50; ++i) {
+    const int64_t utime = int64_t{i} * 200000;
+    for (auto it = senders.begin(); it != senders.end(); ++it)
+      forwards.send(*it, utime, {static_cast<uint8_t>(it->player), static_cast<uint8_t>(i)}, kField);
+    for (auto it = senders.rbegin(); it != senders.rend(); ++it)
+      backwards.send(*it, utime, {static_cast<uint8_t>(it->player), static_cast<uint8_t>(i)}, kField);
+  }
+  EXPECT_EQ(forwards.lost(), backwards.lost());
+  EXPECT_GT(forwards.lost(), 0);
+  for (const RobotId& to : senders) {
+    for (int64_t utime = 0; utime <= 11000000; utime += 100000) {
+      const auto a = forwards.receive(to, utime), b = backwards.receive(to, utime);
+      ASSERT_EQ(a.size(), b.size());
+      for (size_t k = 0; k < a.size(); ++k) {
+        EXPECT_EQ(a[k].player, b[k].player);
+        EXPECT_EQ(a[k].data, b[k].data);
+        if (k > 0 && a[k].sent_utime == a[k - 1].sent_utime) {
+          EXPECT_LT(a[k - 1].player, a[k].player);
+        }
+      }
+    }
+  }
+  EXPECT_EQ(forwards.delivered(), backwards.delivered());
+}
+
+TEST(TeamComm, OneRobotsMessagesDoNotShiftAnothersLosses) {
+  // Robot 2 talking or not leaves the fate of robot 1's messages as it was.
+  CommDef def;
+  def.loss_probability = 0.5f;
+  TeamComm quiet(def, 11), chatty(def, 11);
+  for (int i = 0; i < 100; ++i) {
+    const int64_t utime = int64_t{i} * 200000;
+    chatty.send({0, 2}, utime, kHello, kField);
+    quiet.send({0, 1}, utime, kHello, kField);
+    chatty.send({0, 1}, utime, kHello, kField);
+  }
+  for (const RobotId& to : {RobotId{0, 2}, RobotId{0, 3}}) {
+    std::vector<int64_t> heard_quiet, heard_chatty;
+    for (const auto& m : quiet.receive(to, 30000000)) heard_quiet.push_back(m.sent_utime);
+    for (const auto& m : chatty.receive(to, 30000000))
+      if (m.player == 1) heard_chatty.push_back(m.sent_utime);
+    EXPECT_EQ(heard_quiet, heard_chatty);
+    EXPECT_GT(heard_quiet.size(), 20u);
+    EXPECT_LT(heard_quiet.size(), 80u);
+  }
+}

@@ -3,12 +3,13 @@
 // sonar models, and the camera-frame clock. Each frame the match hands out a SenseFrame,
 // takes the robots' RobotActs, steps the world through the frame's 3-4 motion ticks and
 // lets the referee judge. sim_world drives it over LCM; tests and the in-process mode
-// call it directly. Every random draw comes from the seed, so a seed fixes the match.
+// call it directly. Every random draw is keyed on the seed, the frame and the robots it
+// concerns (touchline/random.hpp), so a seed fixes the match whatever order the robots'
+// answers arrive in.
 #include <cstdint>
 #include <deque>
 #include <map>
 #include <optional>
-#include <random>
 #include <set>
 #include <vector>
 
@@ -70,8 +71,8 @@ class Match {
   void start();
   bool started() const { return started_; }
 
-  /// What the robots sense at the start of the current frame. Not const: the camera's
-  /// noise draws from the match's random stream (call it once per frame).
+  /// What the robots sense at the start of the current frame. Not const: it hands out the
+  /// team messages that have arrived (call it once per frame).
   SenseFrame sense();
   /// Robots that must answer the current frame.
   std::vector<RobotId> active_robots() const;
@@ -128,7 +129,7 @@ class Match {
   std::vector<Viewer> viewers() const;
 
   WorldConfig config_;
-  std::mt19937_64 rng_;  ///< falls; the camera has its own stream (seeded from the same seed)
+  uint64_t seed_; ///< keys the falls' draws; the camera and the radio key theirs on it too
   World world_;
   Roster roster_;
   Perception perception_;

@@ -4,13 +4,13 @@
 // 2.3 through sim::sight) and what its sonar reads (Algorithm 2.4), with the noise and
 // faults of a PerceptionDef. Pure computation: no transport, no wall time.
 //
-// Determinism: one seeded mt19937_64, turned into numbers by this library's own
-// arithmetic (not std:: distributions, whose algorithms differ between standard
-// libraries). Every candidate object costs the same draws whether or not it is seen, so
-// the same seed, the same calls and the same world give the same observations bit for
-// bit, and one robot turning its head never shifts the noise of another's view.
+// Determinism: every draw is keyed (touchline/random.hpp) on the seed, the frame, the
+// viewer and the object, and turned into numbers by this library's own arithmetic (not
+// std:: distributions, whose algorithms differ between standard libraries). So the same
+// seed, frame and world give the same observations bit for bit, whatever else is asked
+// and in whatever order, and one robot turning its head or joining never shifts the noise
+// of another's view.
 #include <cstdint>
-#include <random>
 #include <vector>
 
 #include "touchline/frame.hpp"
@@ -41,36 +41,36 @@ class Perception {
  public:
   Perception(const Field& field, const PerceptionDef& def, uint64_t seed);
 
-  /// What `me`'s camera reports, robot frame, noise applied. Candidates, in this order:
+  /// What `me`'s camera reports in `frame`, robot frame, noise applied. Candidates, in this order:
   /// the ball (or, if it is not reported, possibly a phantom ball), the field landmarks
   /// (field_landmarks() order), then every robot in `robots` except `me` (matched by id),
   /// labelled kTeammate or kOpponent by `me`'s team with id = player number. A candidate
   /// is reported if Algorithm 2.3 sees it, no other robot's body hides it (ball and
   /// landmarks only) and no false negative drops it.
-  std::vector<Observation> observe(const Viewer& me, const std::vector<Viewer>& robots, const BallTruth& ball);
+  std::vector<Observation> observe(const Viewer& me, const std::vector<Viewer>& robots, const BallTruth& ball,
+                                   int64_t frame) const;
 
-  /// `me`'s sonar (Algorithm 2.4) against every other robot's body centre and, if
-  /// configured, the goal posts; Gaussian noise on readings that see something.
-  SonarReading sonar(const Viewer& me, const std::vector<Viewer>& robots);
+  /// `me`'s sonar (Algorithm 2.4) in `frame` against every other robot's body centre and,
+  /// if configured, the goal posts; Gaussian noise on readings that see something.
+  SonarReading sonar(const Viewer& me, const std::vector<Viewer>& robots, int64_t frame) const;
 
-  /// observe() then sonar() for each robot in `robots`, in that order.
-  std::vector<Percept> perceive(const std::vector<Viewer>& robots, const BallTruth& ball);
+  /// observe() and sonar() for each robot in `robots`.
+  std::vector<Percept> perceive(const std::vector<Viewer>& robots, const BallTruth& ball, int64_t frame) const;
 
   const std::vector<Landmark>& landmarks() const { return landmarks_; }
   const PerceptionDef& def() const { return def_; }
 
  private:
-  double uniform();  ///< [0, 1), 53 random bits
-  double gaussian(); ///< standard normal (Box-Muller, one pair of draws per number)
   bool hidden(const Viewer& me, const std::vector<Viewer>& robots, float x_mm, float y_mm) const;
-  /// Draws this candidate's miss and noise numbers, then reports it into `out` if seen.
-  bool consider(const Viewer& me, const std::vector<Viewer>& robots, ObjectKind kind, int id, float x_mm,
-                float y_mm, float miss_probability, bool can_be_hidden, std::vector<Observation>& out);
+  /// Reports this candidate into `out` if seen, with its own keyed miss and noise draws.
+  bool consider(const Viewer& me, const std::vector<Viewer>& robots, int64_t frame, ObjectKind kind, int id,
+                float x_mm, float y_mm, float miss_probability, bool can_be_hidden,
+                std::vector<Observation>& out) const;
 
   Field field_;
   PerceptionDef def_;
   std::vector<Landmark> landmarks_;
-  std::mt19937_64 rng_;
+  uint64_t seed_;
 };
 
 } // namespace touchline::sim

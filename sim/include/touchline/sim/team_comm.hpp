@@ -2,10 +2,13 @@
 // Team communication: each robot may send a bounded message at a bounded rate; the world
 // relays it to every teammate on the field after a latency, losing each delivery with a
 // probability. Seeded; no wall time. Reads: the robots' messages. Writes: deliveries.
+//
+// Order-free: whether a delivery is lost is a keyed draw on (seed, send time, sender,
+// recipient), and a recipient gets what has arrived ordered by (arrival time, sender), so
+// the same messages give the same deliveries in whatever order they are sent.
 #include <cstdint>
-#include <deque>
 #include <map>
-#include <random>
+#include <utility>
 #include <vector>
 
 #include "touchline/frame.hpp"
@@ -31,9 +34,11 @@ class TeamComm {
  public:
   TeamComm(const CommDef& def, uint64_t seed);
 
-  /// `from` sends `data` at `utime` to the teammates in `team` (itself excluded).
+  /// `from` sends `data` at `utime` to the teammates in `team` (itself excluded). At most
+  /// one message per robot per `utime` is sent (the rate limit sees to it).
   SendResult send(RobotId from, int64_t utime, const std::vector<uint8_t>& data, const std::vector<RobotId>& team);
-  /// Messages for `to` that have arrived by `utime`, oldest first; they are handed out once.
+  /// Messages for `to` that have arrived by `utime`, oldest first and, arriving together,
+  /// by sender's player number; they are handed out once.
   std::vector<TeamMessageFrame> receive(RobotId to, int64_t utime);
 
   int64_t sent() const { return sent_; }
@@ -42,14 +47,12 @@ class TeamComm {
   int64_t refused() const { return refused_; }
 
  private:
-  struct InFlight {
-    int64_t arrives_utime;
-    TeamMessageFrame message;
-  };
+  /// (arrival time in microseconds, sender's player number): the order of delivery.
+  using Arrival = std::pair<int64_t, int>;
   CommDef def_;
-  std::mt19937_64 rng_;
+  uint64_t seed_;
   std::map<RobotId, int64_t> last_sent_utime_;
-  std::map<RobotId, std::deque<InFlight>> in_flight_; ///< per recipient, in arrival order
+  std::map<RobotId, std::multimap<Arrival, TeamMessageFrame>> in_flight_; ///< per recipient
   int64_t sent_ = 0, delivered_ = 0, lost_ = 0, refused_ = 0;
 };
 
