@@ -10,7 +10,9 @@
 #include <pybind11/embed.h>
 
 #include "touchline/behaviour/registry.hpp"
+#include "touchline/cli.hpp"
 #include "touchline/ini.hpp"
+#include "touchline/lcm/lcm_url.hpp"
 #include "touchline/lcm/robot_node.hpp"
 #include "touchline/python/python_behaviour.hpp"
 #include "touchline/robot_api/data.hpp"
@@ -76,8 +78,9 @@ int main(int argc, char** argv) {
       "Usage: robot_shim --team T --player N [options]\nOptions");
   options.add_options()
     ("help,h", "print this help and exit")
-    ("team", po::value(&team)->required(), "team index, 0 or 1")
-    ("player", po::value(&player)->required(), "player number, 1..7 (and within the world's team size)")
+    ("team", number_option("--team", &team, 0, 1, /*show_default=*/false)->required(), "team index, 0 or 1")
+    ("player", number_option("--player", &player, 1, kMaxTeamSize, /*show_default=*/false)->required(),
+     "player number, 1..7 (and within the world's team size)")
     ("behaviour", po::value(&behaviour_name)->default_value(behaviour_name),
      "the behaviour to run: a C++ one, or py / py:MODULE for Python (see the list below)")
     ("param", po::value(&param_args)->composing(), "a behaviour parameter, key=value (repeatable)")
@@ -93,10 +96,13 @@ int main(int argc, char** argv) {
     ("kick-config", po::value(&kick_config), "kick and dribble parameters file ([kick], [dribble]); default: the built-in kick")
     ("field-config", po::value(&field_config), "the world config whose [field] the robot knows (landmarks for localisation); default: SPL 2011")
     ("perfect-localisation", po::bool_switch(&localisation.perfect), "the robot's pose from the truth instead of the filter (the ball still from the camera)")
-    ("lcm-url", po::value(&node.lcm_url)->default_value(node.lcm_url), "LCM provider URL")
-    ("join-timeout", po::value(&node.join_timeout_s)->default_value(node.join_timeout_s), "wall seconds to wait for sim_world to accept us")
-    ("world-timeout", po::value(&node.world_timeout_s)->default_value(node.world_timeout_s), "wall seconds of silence from sim_world before exiting")
-    ("snapshot-every", po::value(&node.snapshot_every)->default_value(node.snapshot_every),
+    ("lcm-url", po::value(&node.lcm_url)->default_value(node.lcm_url),
+     "LCM provider URL (opened once at start: a URL LCM cannot open is a usage error)")
+    ("join-timeout", number_option("--join-timeout", &node.join_timeout_s, 0.01, 86400.0),
+     "wall seconds to wait for sim_world to accept us, 0.01..86400")
+    ("world-timeout", number_option("--world-timeout", &node.world_timeout_s, 0.01, 86400.0),
+     "wall seconds of silence from sim_world before exiting, 0.01..86400")
+    ("snapshot-every", number_option("--snapshot-every", &node.snapshot_every, 0, 1000000),
      "publish the Blackboard (as the behaviour saw it) on TL_BLACKBOARD_<team>_<player> every N behaviour ticks; 0: never");
 
   std::optional<pybind11::scoped_interpreter> interpreter; // only for py; outlives the behaviour
@@ -111,15 +117,13 @@ int main(int argc, char** argv) {
       return 0;
     }
     po::notify(vm);
-    if (team != 0 && team != 1) throw po::error("--team must be 0 or 1 (got " + std::to_string(team) + ")");
-    if (player < 1 || player > kMaxTeamSize)
-      throw po::error("--player must be 1.." + std::to_string(kMaxTeamSize) + " (got " + std::to_string(player) + ")");
-    if (node.join_timeout_s <= 0 || node.world_timeout_s <= 0) throw po::error("timeouts must be > 0");
-    if (node.snapshot_every < 0) throw po::error("--snapshot-every must be >= 0");
     if (!walk_config.empty()) walk = robot::load_walk_def(walk_config);
     if (!kick_config.empty()) kick = robot::load_kick_def(kick_config);
     if (!field_config.empty()) localisation.filters.field = robot::localisation::load_field_map(field_config);
     if (!std::filesystem::is_directory(data_dir)) throw po::error("--data-dir " + data_dir + " is not a directory");
+    // Before the interpreter: the check redirects stderr for a moment, so no other thread may run.
+    if (const auto problem = transport::lcm_url_problem(node.lcm_url))
+      throw ConfigError("--lcm-url '" + node.lcm_url + "': cannot open LCM: " + *problem);
     api::set_data_dir(data_dir); // before the behaviour is made: it may load its data
     if (const auto module = python_module(behaviour_name)) {
       // Python's own signal handlers stay off: SIGINT/SIGTERM stop the shim (below); no
