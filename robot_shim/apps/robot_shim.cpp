@@ -1,6 +1,10 @@
 // robot_shim: one robot's own code (Blackboard, adapters, MotionAdapter, WalkCycle and a
 // behaviour) playing in sim_world over LCM. Thin program: options -> Robot -> run_robot.
+#include <unistd.h>
+
 #include <csignal>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -15,6 +19,7 @@
 #include "touchline/lcm/lcm_url.hpp"
 #include "touchline/lcm/robot_node.hpp"
 #include "touchline/python/python_behaviour.hpp"
+#include "touchline/python/tick_guard.hpp"
 #include "touchline/robot_api/data.hpp"
 
 namespace po = boost::program_options;
@@ -58,9 +63,55 @@ std::string behaviour_list() {
          "      robot.team and robot.player. Edited .py files there are reloaded while the robot\n"
          "      plays (looked for every 250 ms of wall time). While the module fails to import,\n"
          "      raises in tick() or returns anything but robot.All, the robot stands with its\n"
-         "      chest LED magenta (0xff00ff) and the traceback is printed once per change of the files.\n";
+         "      chest LED magenta (0xff00ff) and the traceback is printed once per change of the files.\n"
+         "      A tick() that runs longer than --tick-timeout-ms (a loop that never ends, a call that\n"
+         "      blocks) is interrupted where it hangs (touchline.TickTimeout, traceback printed) and\n"
+         "      not called again until the files change; the robot stands as above meanwhile.\n"
+         "Stopping: SIGINT or SIGTERM stops the shim within 2 s even while its behaviour hangs\n"
+         "(running Python is interrupted; anything else is cut short), exit status 128 + the\n"
+         "signal's number (130, 143).\n";
   return out.str();
 }
+
+// Stopping on SIGINT/SIGTERM: the node returns at its next look at the flag, and Python
+// that runs meanwhile is interrupted (python::request_stop). Whatever still holds the
+// shim kStopGraceS later (C++ behaviour code that never returns, Python that swallows the
+// interruption, a Python thread that keeps the interpreter from finishing) is cut short
+// with _exit; a second signal cuts it short at once. Either way the exit status is the
+// conventional 128 + the signal's number (130 for SIGINT, 143 for SIGTERM).
+
+/// Enough for a frame and Python's shutdown; well within a launcher's wait before SIGKILL.
+constexpr unsigned kStopGraceS = 2;
+volatile std::sig_atomic_t g_stop_signal = 0; ///< the first stop signal's number
+char g_grace_message[160] = "robot_shim: still running 2 s after the stop signal; exiting\n";
+
+void on_grace_over(int) {
+  [[maybe_unused]] const ssize_t written = write(STDERR_FILENO, g_grace_message, std::strlen(g_grace_message));
+  _exit(128 + g_stop_signal);
+}
+
+void on_stop_signal(int signal) {
+  if (g_stop_signal != 0) _exit(128 + g_stop_signal);
+  g_stop_signal = signal;
+  transport::request_robot_stop();
+  python::request_stop();
+  alarm(kStopGraceS);
+}
+
+void handle_stop_signals(int team, int player) {
+  std::snprintf(g_grace_message, sizeof g_grace_message,
+                "robot_shim %d/%d: still running %u s after the stop signal (stuck in the behaviour?); exiting\n",
+                team, player, kStopGraceS);
+  struct sigaction action {};
+  sigemptyset(&action.sa_mask);
+  action.sa_handler = on_grace_over;
+  sigaction(SIGALRM, &action, nullptr);
+  action.sa_handler = on_stop_signal;
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+int stop_status() { return 128 + (g_stop_signal ? g_stop_signal : SIGINT); }
 
 } // namespace
 
@@ -72,6 +123,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> param_args;
   transport::RobotNodeDef node;
   robot::BehaviourTimingDef timing;
+  int64_t tick_timeout_ms = python::PythonBehaviourDef{}.tick_timeout_us / 1000;
 
   po::options_description options(
       "robot_shim: runs one robot's code in a sim_world match over LCM.\n"
@@ -102,6 +154,9 @@ int main(int argc, char** argv) {
      "wall seconds to wait for sim_world to accept us, 0.01..86400")
     ("world-timeout", number_option("--world-timeout", &node.world_timeout_s, 0.01, 86400.0),
      "wall seconds of silence from sim_world before exiting, 0.01..86400")
+    ("tick-timeout-ms", number_option("--tick-timeout-ms", &tick_timeout_ms, int64_t{0}, int64_t{3600000}),
+     "Python behaviour: wall time one tick() (with a reload's import) may run, 0..3600000 ms, before it is "
+     "interrupted; 0: never (e.g. to debug it with pdb)")
     ("snapshot-every", number_option("--snapshot-every", &node.snapshot_every, 0, 1000000),
      "publish the Blackboard (as the behaviour saw it) on TL_BLACKBOARD_<team>_<player> every N behaviour ticks; 0: never");
 
@@ -125,6 +180,8 @@ int main(int argc, char** argv) {
     if (const auto problem = transport::lcm_url_problem(node.lcm_url))
       throw ConfigError("--lcm-url '" + node.lcm_url + "': cannot open LCM: " + *problem);
     api::set_data_dir(data_dir); // before the behaviour is made: it may load its data
+    // From here on a stop signal must reach Python: a module may hang at import.
+    handle_stop_signals(team, player);
     if (const auto module = python_module(behaviour_name)) {
       // Python's own signal handlers stay off: SIGINT/SIGTERM stop the shim (below); no
       // program directory on sys.path: the behaviour's modules come from --python-dir alone.
@@ -136,6 +193,7 @@ int main(int argc, char** argv) {
       def.team = team;
       def.player = player;
       def.name = "robot_shim " + std::to_string(team) + "/" + std::to_string(player);
+      def.tick_timeout_us = tick_timeout_ms * 1000;
       behaviour = std::make_unique<python::PythonBehaviour>(std::move(def));
     } else {
       behaviour = behaviour::make_behaviour(behaviour_name, parse_params(param_args));
@@ -150,20 +208,20 @@ int main(int argc, char** argv) {
     std::cerr << "robot_shim: " << e.what() << "\n";
     return kUsageError;
   } catch (const python::PythonBehaviourError& e) {
+    if (g_stop_signal) return stop_status(); // stopped while the module was imported
     std::cerr << "robot_shim: " << e.what() << "\n";
     return kUsageError;
   }
 
-  std::signal(SIGINT, [](int) { transport::request_robot_stop(); });
-  std::signal(SIGTERM, [](int) { transport::request_robot_stop(); });
   try {
     robot::Robot robot({team, player}, walk, std::move(behaviour), timing, kick, localisation);
     robot.set_behaviour_name(describe_behaviour(behaviour_name, parse_params(param_args)));
+    if (g_stop_signal) return stop_status(); // before run_robot, which starts afresh
     switch (transport::run_robot(robot, node, std::cerr)) {
       case transport::RobotExit::kMatchOver: return 0;
       case transport::RobotExit::kRejected: return kUsageError;
       case transport::RobotExit::kNoWorld: return 1;
-      case transport::RobotExit::kInterrupted: return 130;
+      case transport::RobotExit::kInterrupted: return stop_status();
     }
   } catch (const std::exception& e) {
     std::cerr << "robot_shim: " << e.what() << "\n";

@@ -81,6 +81,8 @@ SHIM = ["--team", "0", "--player", "1"]
     (SHIM + ["--world-timeout", "1e300"], "--world-timeout must be a number in [0.01, 86400] (got '1e300')"),
     (SHIM + ["--world-timeout", "inf"], "--world-timeout must be a number in [0.01, 86400] (got 'inf')"),
     (SHIM + ["--snapshot-every", "-1"], "--snapshot-every must be an integer in [0, 1000000] (got '-1')"),
+    (SHIM + ["--tick-timeout-ms", "nan"], "--tick-timeout-ms must be an integer in [0, 3600000] (got 'nan')"),
+    (SHIM + ["--tick-timeout-ms", "-1"], "--tick-timeout-ms must be an integer in [0, 3600000] (got '-1')"),
     (SHIM + ["--lcm-url", "udpm://8.8.8.8:7667"], "cannot open LCM: not a multicast group address: 8.8.8.8"),
     (SHIM + ["--lcm-url", "tcpq://127.0.0.1:1"], "cannot open LCM: lcm_tcpq connect: Connection refused"),
 ])
@@ -115,9 +117,10 @@ def test_help_documents_every_option():
     shim = run(ROBOT_SHIM, "--help")
     assert world.returncode == 0 and shim.returncode == 0
     for option in ["--config", "--set", "--robots", "--duration", "--mode", "--speed", "--robot-timeout-ms",
-                   "--seed", "--lcm-url", "--summary"]:
+                   "--join-timeout", "--seed", "--lcm-url", "--summary", "--log"]:
         assert option in world.stdout
-    for option in ["--team", "--player", "--behaviour", "--param", "--walk-config", "--lcm-url"]:
+    for option in ["--team", "--player", "--behaviour", "--param", "--walk-config", "--lcm-url", "--join-timeout",
+                   "--world-timeout", "--tick-timeout-ms"]:
         assert option in shim.stdout
     assert "goto" in shim.stdout
 
