@@ -183,7 +183,7 @@ int main(int argc, char** argv) {
     // From here on a stop signal must reach Python: a module may hang at import.
     handle_stop_signals(team, player);
     if (const auto module = python_module(behaviour_name)) {
-      // Python's own signal handlers stay off: SIGINT/SIGTERM stop the shim (below); no
+      // Python's own signal handlers stay off: SIGINT/SIGTERM stop the shim (handle_stop_signals); no
       // program directory on sys.path: the behaviour's modules come from --python-dir alone.
       interpreter.emplace(/*init_signal_handlers=*/false, 0, nullptr, /*add_program_dir_to_path=*/false);
       python::PythonBehaviourDef def;
