@@ -1,6 +1,10 @@
 // robot_shim: one robot's own code (Blackboard, adapters, MotionAdapter, WalkCycle and a
 // behaviour) playing in sim_world over LCM. Thin program: options -> Robot -> run_robot.
+#include <unistd.h>
+
 #include <csignal>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -10,9 +14,12 @@
 #include <pybind11/embed.h>
 
 #include "touchline/behaviour/registry.hpp"
+#include "touchline/cli.hpp"
 #include "touchline/ini.hpp"
+#include "touchline/lcm/lcm_url.hpp"
 #include "touchline/lcm/robot_node.hpp"
 #include "touchline/python/python_behaviour.hpp"
+#include "touchline/python/tick_guard.hpp"
 #include "touchline/robot_api/data.hpp"
 
 namespace po = boost::program_options;
@@ -56,9 +63,55 @@ std::string behaviour_list() {
          "      robot.team and robot.player. Edited .py files there are reloaded while the robot\n"
          "      plays (looked for every 250 ms of wall time). While the module fails to import,\n"
          "      raises in tick() or returns anything but robot.All, the robot stands with its\n"
-         "      chest LED magenta (0xff00ff) and the traceback is printed once per change of the files.\n";
+         "      chest LED magenta (0xff00ff) and the traceback is printed once per change of the files.\n"
+         "      A tick() that runs longer than --tick-timeout-ms (a loop that never ends, a call that\n"
+         "      blocks) is interrupted where it hangs (touchline.TickTimeout, traceback printed) and\n"
+         "      not called again until the files change; the robot stands as above meanwhile.\n"
+         "Stopping: SIGINT or SIGTERM stops the shim within 2 s even while its behaviour hangs\n"
+         "(running Python is interrupted; anything else is cut short), exit status 128 + the\n"
+         "signal's number (130, 143).\n";
   return out.str();
 }
+
+// Stopping on SIGINT/SIGTERM: the node returns at its next look at the flag, and Python
+// that runs meanwhile is interrupted (python::request_stop). Whatever still holds the
+// shim kStopGraceS later (C++ behaviour code that never returns, Python that swallows the
+// interruption, a Python thread that keeps the interpreter from finishing) is cut short
+// with _exit; a second signal cuts it short at once. Either way the exit status is the
+// conventional 128 + the signal's number (130 for SIGINT, 143 for SIGTERM).
+
+/// Enough for a frame and Python's shutdown; well within a launcher's wait before SIGKILL.
+constexpr unsigned kStopGraceS = 2;
+volatile std::sig_atomic_t g_stop_signal = 0; ///< the first stop signal's number
+char g_grace_message[160] = "robot_shim: still running 2 s after the stop signal; exiting\n";
+
+void on_grace_over(int) {
+  [[maybe_unused]] const ssize_t written = write(STDERR_FILENO, g_grace_message, std::strlen(g_grace_message));
+  _exit(128 + g_stop_signal);
+}
+
+void on_stop_signal(int signal) {
+  if (g_stop_signal != 0) _exit(128 + g_stop_signal);
+  g_stop_signal = signal;
+  transport::request_robot_stop();
+  python::request_stop();
+  alarm(kStopGraceS);
+}
+
+void handle_stop_signals(int team, int player) {
+  std::snprintf(g_grace_message, sizeof g_grace_message,
+                "robot_shim %d/%d: still running %u s after the stop signal (stuck in the behaviour?); exiting\n",
+                team, player, kStopGraceS);
+  struct sigaction action {};
+  sigemptyset(&action.sa_mask);
+  action.sa_handler = on_grace_over;
+  sigaction(SIGALRM, &action, nullptr);
+  action.sa_handler = on_stop_signal;
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+int stop_status() { return 128 + (g_stop_signal ? g_stop_signal : SIGINT); }
 
 } // namespace
 
@@ -71,14 +124,16 @@ int main(int argc, char** argv) {
   std::string secret_file;
   transport::RobotNodeDef node;
   robot::BehaviourTimingDef timing;
+  int64_t tick_timeout_ms = python::PythonBehaviourDef{}.tick_timeout_us / 1000;
 
   po::options_description options(
       "robot_shim: runs one robot's code in a sim_world match over LCM.\n"
       "Usage: robot_shim --team T --player N [options]\nOptions");
   options.add_options()
     ("help,h", "print this help and exit")
-    ("team", po::value(&team)->required(), "team index, 0 or 1")
-    ("player", po::value(&player)->required(), "player number, 1..7 (and within the world's team size)")
+    ("team", number_option("--team", &team, 0, 1, /*show_default=*/false)->required(), "team index, 0 or 1")
+    ("player", number_option("--player", &player, 1, kMaxTeamSize, /*show_default=*/false)->required(),
+     "player number, 1..7 (and within the world's team size)")
     ("behaviour", po::value(&behaviour_name)->default_value(behaviour_name),
      "the behaviour to run: a C++ one, or py / py:MODULE for Python (see the list below)")
     ("param", po::value(&param_args)->composing(), "a behaviour parameter, key=value (repeatable)")
@@ -94,13 +149,19 @@ int main(int argc, char** argv) {
     ("kick-config", po::value(&kick_config), "kick and dribble parameters file ([kick], [dribble]); default: the built-in kick")
     ("field-config", po::value(&field_config), "the world config whose [field] the robot knows (landmarks for localisation); default: SPL 2011")
     ("perfect-localisation", po::bool_switch(&localisation.perfect), "the robot's pose from the truth instead of the filter (the ball still from the camera)")
-    ("lcm-url", po::value(&node.lcm_url)->default_value(node.lcm_url), "LCM provider URL")
+    ("lcm-url", po::value(&node.lcm_url)->default_value(node.lcm_url),
+     "LCM provider URL (opened once at start: a URL LCM cannot open is a usage error)")
     ("secret-file", po::value(&secret_file),
      "the match secret (hex) every message is authenticated with; default: $TOUCHLINE_MATCH_SECRET. "
      "Every program of the match needs the same one")
-    ("join-timeout", po::value(&node.join_timeout_s)->default_value(node.join_timeout_s), "wall seconds to wait for sim_world to accept us")
-    ("world-timeout", po::value(&node.world_timeout_s)->default_value(node.world_timeout_s), "wall seconds of silence from sim_world before exiting")
-    ("snapshot-every", po::value(&node.snapshot_every)->default_value(node.snapshot_every),
+    ("join-timeout", number_option("--join-timeout", &node.join_timeout_s, 0.01, 86400.0),
+     "wall seconds to wait for sim_world to accept us, 0.01..86400")
+    ("world-timeout", number_option("--world-timeout", &node.world_timeout_s, 0.01, 86400.0),
+     "wall seconds of silence from sim_world before exiting, 0.01..86400")
+    ("tick-timeout-ms", number_option("--tick-timeout-ms", &tick_timeout_ms, int64_t{0}, int64_t{3600000}),
+     "Python behaviour: wall time one tick() (with a reload's import) may run, 0..3600000 ms, before it is "
+     "interrupted; 0: never (e.g. to debug it with pdb)")
+    ("snapshot-every", number_option("--snapshot-every", &node.snapshot_every, 0, 1000000),
      "publish the Blackboard (as the behaviour saw it) on TL_BLACKBOARD_<team>_<player> every N behaviour ticks; 0: never");
 
   std::optional<pybind11::scoped_interpreter> interpreter; // only for py; outlives the behaviour
@@ -115,19 +176,19 @@ int main(int argc, char** argv) {
       return 0;
     }
     po::notify(vm);
-    if (team != 0 && team != 1) throw po::error("--team must be 0 or 1 (got " + std::to_string(team) + ")");
-    if (player < 1 || player > kMaxTeamSize)
-      throw po::error("--player must be 1.." + std::to_string(kMaxTeamSize) + " (got " + std::to_string(player) + ")");
-    if (node.join_timeout_s <= 0 || node.world_timeout_s <= 0) throw po::error("timeouts must be > 0");
-    if (node.snapshot_every < 0) throw po::error("--snapshot-every must be >= 0");
     node.key = transport::load_match_key(secret_file);
     if (!walk_config.empty()) walk = robot::load_walk_def(walk_config);
     if (!kick_config.empty()) kick = robot::load_kick_def(kick_config);
     if (!field_config.empty()) localisation.filters.field = robot::localisation::load_field_map(field_config);
     if (!std::filesystem::is_directory(data_dir)) throw po::error("--data-dir " + data_dir + " is not a directory");
+    // Before the interpreter: the check redirects stderr for a moment, so no other thread may run.
+    if (const auto problem = transport::lcm_url_problem(node.lcm_url))
+      throw ConfigError("--lcm-url '" + node.lcm_url + "': cannot open LCM: " + *problem);
     api::set_data_dir(data_dir); // before the behaviour is made: it may load its data
+    // From here on a stop signal must reach Python: a module may hang at import.
+    handle_stop_signals(team, player);
     if (const auto module = python_module(behaviour_name)) {
-      // Python's own signal handlers stay off: SIGINT/SIGTERM stop the shim (below); no
+      // Python's own signal handlers stay off: SIGINT/SIGTERM stop the shim (handle_stop_signals); no
       // program directory on sys.path: the behaviour's modules come from --python-dir alone.
       interpreter.emplace(/*init_signal_handlers=*/false, 0, nullptr, /*add_program_dir_to_path=*/false);
       python::PythonBehaviourDef def;
@@ -137,6 +198,7 @@ int main(int argc, char** argv) {
       def.team = team;
       def.player = player;
       def.name = "robot_shim " + std::to_string(team) + "/" + std::to_string(player);
+      def.tick_timeout_us = tick_timeout_ms * 1000;
       behaviour = std::make_unique<python::PythonBehaviour>(std::move(def));
     } else {
       behaviour = behaviour::make_behaviour(behaviour_name, parse_params(param_args));
@@ -151,6 +213,7 @@ int main(int argc, char** argv) {
     std::cerr << "robot_shim: " << e.what() << "\n";
     return kUsageError;
   } catch (const python::PythonBehaviourError& e) {
+    if (g_stop_signal) return stop_status(); // stopped while the module was imported
     std::cerr << "robot_shim: " << e.what() << "\n";
     return kUsageError;
   } catch (const std::invalid_argument& e) { // the match secret
@@ -158,16 +221,15 @@ int main(int argc, char** argv) {
     return kUsageError;
   }
 
-  std::signal(SIGINT, [](int) { transport::request_robot_stop(); });
-  std::signal(SIGTERM, [](int) { transport::request_robot_stop(); });
   try {
     robot::Robot robot({team, player}, walk, std::move(behaviour), timing, kick, localisation);
     robot.set_behaviour_name(describe_behaviour(behaviour_name, parse_params(param_args)));
+    if (g_stop_signal) return stop_status(); // before run_robot, which starts afresh
     switch (transport::run_robot(robot, node, std::cerr)) {
       case transport::RobotExit::kMatchOver: return 0;
       case transport::RobotExit::kRejected: return kUsageError;
       case transport::RobotExit::kNoWorld: return 1;
-      case transport::RobotExit::kInterrupted: return 130;
+      case transport::RobotExit::kInterrupted: return stop_status();
     }
   } catch (const std::exception& e) {
     std::cerr << "robot_shim: " << e.what() << "\n";

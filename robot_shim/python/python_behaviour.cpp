@@ -11,6 +11,7 @@
 #include <pybind11/stl.h>
 
 #include "touchline/python/robot_module.hpp"
+#include "touchline/python/tick_guard.hpp"
 
 namespace py = pybind11;
 
@@ -148,7 +149,17 @@ PythonBehaviour::PythonBehaviour(PythonBehaviourDef def) : def_(std::move(def)) 
 
   files_ = scan_python_files(def_.directory);
   next_check_us_ = now_us() + def_.reload_check_interval_us;
-  healthy_ = load(/*starting=*/true);
+  try {
+    install_tick_guard();
+    const TickGuard guard(def_.tick_timeout_us); // a module that hangs at import
+    healthy_ = load(/*starting=*/true);
+  } catch (const py::error_already_set& e) { // touchline.Stopping: the shim is stopping anyway
+    leave();
+    throw PythonBehaviourError(std::string("cannot start the Python behaviour: ") + e.what());
+  } catch (const std::runtime_error& e) {
+    leave();
+    throw PythonBehaviourError(std::string("cannot start the Python behaviour: ") + e.what());
+  }
   if (py_->module && !py_->tick) { // imported cleanly but cannot be ticked: a usage error
     leave();
     throw PythonBehaviourError("Python module '" + def_.module + "' has no tick(blackboard) function");
@@ -212,6 +223,7 @@ bool PythonBehaviour::load(bool starting) {
     // Through the C API, which cuts importlib's own frames from the traceback.
     py_->module = py::module_::import(def_.module.c_str());
   } catch (const py::error_already_set& e) {
+    if (is_stopping(e)) throw; // not the module's fault
     report_once("importing " + def_.module + " failed", &e);
     return false;
   }
@@ -243,18 +255,24 @@ void PythonBehaviour::check_files() {
   for (py::handle name : module_names_under(py_->sys, prefix_)) modules.attr("pop")(name);
   py::module_::import("importlib").attr("invalidate_caches")(); // new files must be found
   reported_ = false;
+  timed_out_ = false;
   healthy_ = load(/*starting=*/false);
   if (healthy_) log_lines("reloaded " + def_.module + " (changed: " + changed + ")\n");
 }
 
 api::ActionCommand::All PythonBehaviour::tick(const api::Blackboard& blackboard) {
+  if (stop_requested()) { // the shim is stopping: no more Python
+    healthy_ = false;
+    return error_request();
+  }
   try {
     activate();
+    const TickGuard guard(def_.tick_timeout_us);
     if (now_us() >= next_check_us_) {
       next_check_us_ = now_us() + def_.reload_check_interval_us;
       check_files();
     }
-    if (!py_->tick) {
+    if (!py_->tick || timed_out_) {
       healthy_ = false;
       return error_request();
     }
@@ -267,7 +285,16 @@ api::ActionCommand::All PythonBehaviour::tick(const api::Blackboard& blackboard)
     healthy_ = true;
     return result.cast<AC::All>();
   } catch (const py::error_already_set& e) {
-    report_once("tick() raised", &e);
+    if (is_stopping(e)) { // asked to stop, not the behaviour's fault: nothing to report
+      healthy_ = false;
+      return error_request();
+    }
+    if (is_tick_timeout(e)) {
+      timed_out_ = true;
+      report_once("tick() timed out, not called again until the files change", &e);
+    } else {
+      report_once("tick() raised", &e);
+    }
   } catch (const std::exception& e) {
     report_once(std::string("Python behaviour failed: ") + e.what(), nullptr);
   } catch (...) { // whatever it was, the robot stands and the shim plays on

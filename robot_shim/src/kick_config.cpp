@@ -1,4 +1,3 @@
-#include <sstream>
 #include <string>
 
 #include "touchline/ini.hpp"
@@ -14,33 +13,25 @@ constexpr float kMaxFootSpeed_mm_s = 3000.f;
 /// A bend beyond this would swing the foot sideways across the other foot.
 constexpr float kMaxBend_rad = 1.0f;
 
-/// Throws unless `ok`, naming the file and key: "config/kick.ini: kick.prepare_s must be
-/// >= 0 (got -1)".
-void require(bool ok, const std::string& path, const std::string& key, const char* rule,
-             float got) {
-  if (ok) return;
-  std::ostringstream message;
-  message << (path.empty() ? std::string("kick defaults") : path) << ": " << key << ' ' << rule
-          << " (got " << got << ')';
-  throw ConfigError(message.str());
-}
+/// A foot's reach: no kick draws back or swings through further than this.
+constexpr float kMaxSwing_mm = 1000.f;
+/// Standing before and after a kick: ten seconds of it is no kick.
+constexpr float kMaxPause_s = 10.f;
+/// Turning to bend and back: a full turn in a twentieth of a second.
+constexpr float kMaxAimSpeed_rad_s = 126.f;
 
-void validate(const SwingDef& d, const std::string& section, const std::string& path) {
-  auto check = [&](bool ok, const char* key, const char* rule, float got) {
-    require(ok, path, section + "." + key, rule, got);
-  };
-  check(d.prepare_s >= 0, "prepare_s", "must be >= 0", d.prepare_s);
-  check(d.backswing_mm >= 0, "backswing_mm", "must be >= 0", d.backswing_mm);
-  check(d.swing_length_mm > 0, "swing_length_mm", "must be > 0", d.swing_length_mm);
-  check(d.peak_speed_mm_s > 0 && d.peak_speed_mm_s <= kMaxFootSpeed_mm_s, "peak_speed_mm_s",
-        "must be in (0, 3000]", d.peak_speed_mm_s);
-  check(d.min_power > 0 && d.min_power <= 1, "min_power", "must be in (0, 1]", d.min_power);
-  check(d.reposition_speed_mm_s > 0 && d.reposition_speed_mm_s <= kMaxFootSpeed_mm_s,
-        "reposition_speed_mm_s", "must be in (0, 3000]", d.reposition_speed_mm_s);
-  check(d.aim_speed_rad_s > 0, "aim_speed_rad_s", "must be > 0", d.aim_speed_rad_s);
-  check(d.max_bend_rad >= 0 && d.max_bend_rad <= kMaxBend_rad, "max_bend_rad",
-        "must be in [0, 1]", d.max_bend_rad);
-  check(d.recover_s >= 0, "recover_s", "must be >= 0", d.recover_s);
+/// Throws ConfigError naming the key: "kick.prepare_s must be in [0, 10] (got -1)".
+void validate(const SwingDef& d, const std::string& section) {
+  auto key = [&](const char* name) { return section + "." + name; };
+  require_non_negative(key("prepare_s").c_str(), d.prepare_s, kMaxPause_s);
+  require_non_negative(key("backswing_mm").c_str(), d.backswing_mm, kMaxSwing_mm);
+  require_positive(key("swing_length_mm").c_str(), d.swing_length_mm, kMaxSwing_mm);
+  require_positive(key("peak_speed_mm_s").c_str(), d.peak_speed_mm_s, kMaxFootSpeed_mm_s);
+  require_positive(key("min_power").c_str(), d.min_power, 1);
+  require_positive(key("reposition_speed_mm_s").c_str(), d.reposition_speed_mm_s, kMaxFootSpeed_mm_s);
+  require_positive(key("aim_speed_rad_s").c_str(), d.aim_speed_rad_s, kMaxAimSpeed_rad_s);
+  require_non_negative(key("max_bend_rad").c_str(), d.max_bend_rad, kMaxBend_rad);
+  require_non_negative(key("recover_s").c_str(), d.recover_s, kMaxPause_s);
 }
 
 /// Binds every SwingDef field under `section` (the keys' names are the fields' names).
@@ -69,8 +60,12 @@ KickDef load_kick_def(const std::string& path) {
   bind_swing(schema, "kick", def.kick);
   bind_swing(schema, "dribble", def.dribble);
   if (!path.empty()) schema.read_file(path);
-  validate(def.kick, "kick", path);
-  validate(def.dribble, "dribble", path);
+  try {
+    validate(def.kick, "kick");
+    validate(def.dribble, "dribble");
+  } catch (const ConfigError& e) { // "config/kick.ini: kick.prepare_s must be ..."
+    throw ConfigError((path.empty() ? std::string("kick defaults") : path) + ": " + e.what());
+  }
   return def;
 }
 

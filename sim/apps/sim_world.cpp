@@ -4,9 +4,12 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 
 #include <boost/program_options.hpp>
 
+#include "touchline/cli.hpp"
+#include "touchline/lcm/lcm_url.hpp"
 #include "touchline/lcm/world_node.hpp"
 #include "touchline/sim/config.hpp"
 
@@ -115,23 +118,31 @@ int main(int argc, char** argv) {
     ("help,h", "print this help and exit")
     ("config", po::value(&config_path), "world config file ([field], [physics], [match]); default: the built-in SPL 2011 values")
     ("set", po::value(&overrides)->composing(), "override one config value, section.key=value (repeatable)")
-    ("robots", po::value(&robots), "robots to wait for before kick-off (default: both full teams)")
-    ("duration", po::value(&duration_s), "simulated seconds to play (default: match.duration_s)")
+    ("robots", number_option("--robots", &robots, 1, 2 * kMaxTeamSize, /*show_default=*/false),
+     "robots to wait for before kick-off (default: both full teams)")
+    ("duration", number_option("--duration", &duration_s, 0.001, 1e9, /*show_default=*/false),
+     "simulated seconds to play, up to 1e9 (default: match.duration_s)")
     ("mode", po::value(&mode)->default_value(mode), "lockstep (wait for every robot, as fast as possible), realtime (lockstep paced to --speed x wall clock) or free (never wait, paced; late answers apply late)")
-    ("speed", po::value(&node.speed)->default_value(node.speed), "real-time multiple for realtime and free modes")
-    ("robot-timeout-ms", po::value(&node.robot_timeout_ms)->default_value(node.robot_timeout_ms), "wall time a robot may take to answer a frame before it is marked inactive")
-    ("join-timeout", po::value(&node.join_timeout_s)->default_value(node.join_timeout_s), "wall seconds to wait for the robots to join")
-    ("seed", po::value(&seed)->default_value(seed), "random seed: the camera noise, false negatives and falls all draw from it")
-    ("lcm-url", po::value(&node.lcm_url)->default_value(node.lcm_url), "LCM provider URL")
+    ("speed", number_option("--speed", &node.speed, 0.01, 1000.0), "real-time multiple for realtime and free modes, 0.01..1000")
+    ("robot-timeout-ms", number_option("--robot-timeout-ms", &node.robot_timeout_ms, int64_t{1}, int64_t{3600000}),
+     "wall time a robot may take to answer a frame before it is marked inactive, 1..3600000 ms")
+    ("join-timeout", number_option("--join-timeout", &node.join_timeout_s, 0.01, 86400.0),
+     "wall seconds to wait for the robots to join, 0.01..86400")
+    ("seed", number_option("--seed", &seed, uint64_t{0}, std::numeric_limits<uint64_t>::max()),
+     "random seed, 0..2^64-1: the camera noise, false negatives and falls all draw from it")
+    ("lcm-url", po::value(&node.lcm_url)->default_value(node.lcm_url),
+     "LCM provider URL (opened once at start: a URL LCM cannot open is a usage error)")
     ("secret-file", po::value(&secret_file),
      "the match secret (hex) every message is authenticated with; default: $TOUCHLINE_MATCH_SECRET. "
      "Every program of the match needs the same one")
-    ("resend-ms", po::value(&node.resend_ms)->default_value(node.resend_ms),
-     "wall milliseconds after which a frame's sense goes out again to robots that have not answered")
-    ("summary", po::value(&node.summary_path), "write a JSON summary of the match to this path")
+    ("resend-ms", number_option("--resend-ms", &node.resend_ms, int64_t{1}, int64_t{3600000}),
+     "wall milliseconds after which a frame's sense goes out again to robots that have not answered, 1..3600000")
+    ("summary", po::value(&node.summary_path),
+     "write a JSON summary of the match to this path at its end (checked writable at start; an existing file is "
+     "left alone until then)")
     ("gamecontroller", po::value(&gamecontroller),
      "take the game from the official SPL GameController's UDP packets (versions 15 and 18) on [ADDRESS:]PORT, e.g. 127.0.0.1:3838, instead of the built-in referee")
-    ("log", po::value(&node.log_path), "record every message of the match to this LCM event log (lcm-logger format; timestamps are simulated time)")
+    ("log", po::value(&node.log_path), "record every message of the match to this LCM event log (lcm-logger format; timestamps are simulated time; checked writable at start)")
     ("quiet", "no progress lines");
 
   sim::WorldConfig config;
@@ -144,13 +155,9 @@ int main(int argc, char** argv) {
     }
     po::notify(vm);
     node.pacing = parse_mode(mode);
-    if (node.speed <= 0) throw po::error("--speed must be > 0");
-    if (node.robot_timeout_ms <= 0) throw po::error("--robot-timeout-ms must be > 0");
-    if (node.resend_ms <= 0) throw po::error("--resend-ms must be > 0");
     node.key = transport::load_match_key(secret_file);
     node.progress = !vm.count("quiet");
-    if (duration_s > 0) overrides.push_back("match.duration_s=" + std::to_string(duration_s));
-    else if (vm.count("duration")) throw po::error("--duration must be > 0");
+    if (vm.count("duration")) overrides.push_back("match.duration_s=" + format_number(duration_s));
     if (!gamecontroller.empty()) {
       node.gamecontroller = parse_gamecontroller(gamecontroller);
       overrides.push_back("rules.referee=false"); // the GameController referees instead
@@ -159,6 +166,11 @@ int main(int argc, char** argv) {
     node.robots = robots >= 0 ? robots : 2 * config.match.team_size;
     if (node.robots < 1 || node.robots > 2 * config.match.team_size)
       throw po::error("--robots must be 1.." + std::to_string(2 * config.match.team_size));
+    // Outputs written at the end: a bad path must not cost a whole match to find out.
+    if (!node.summary_path.empty()) require_writable("--summary", node.summary_path);
+    if (!node.log_path.empty()) require_writable("--log", node.log_path);
+    if (const auto problem = transport::lcm_url_problem(node.lcm_url))
+      throw ConfigError("--lcm-url '" + node.lcm_url + "': cannot open LCM: " + *problem);
   } catch (const po::error& e) {
     std::cerr << "sim_world: " << e.what() << " (see --help)\n";
     return kUsageError;

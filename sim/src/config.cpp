@@ -66,11 +66,27 @@ void require_at_most(const char* key, float value, const std::string& limit_name
   if (!(value <= limit)) config_fail(key, ("<= " + limit_name + " = " + str(limit)).c_str(), value);
 }
 
+// Bounds for what Box2D is given. Its manual (2.4, "Units") asks for moving shapes of 0.1
+// to 10 m and static ones of at most 50 m; far outside, its float arithmetic breaks down.
+// Measured with Debian's Box2D 2.4: a 0.1 mm foot aborts it (b2PolygonShape::ComputeMass
+// asserts an area above FLT_EPSILON m^2), a 3e38 kg or infinite ball mass makes every
+// position NaN at the first step. The bounds below are generous (several times any
+// RoboCup field, robot or ball), and a test drives a world with every one at its extreme
+// (Config.ExtremeValuesWithinTheBoundsKeepTheWorldSane).
+
+/// The field's length and width are at most kMaxFieldSide_mm (frame.hpp); with the
+/// border, the longest wall (length + 2 border + 1 m of wall) stays under 50 m.
+constexpr float kMaxBorder_mm = 5000.f;
+/// Lines are painted: wider than a metre is a typo.
+constexpr float kMaxLineWidth_mm = 1000.f;
+
 void validate_field(const FieldDef& f) {
-  require_positive("field.length_mm", f.length_mm);
-  require_positive("field.width_mm", f.width_mm);
-  require_positive("field.border_mm", f.border_mm);
-  require_positive("field.line_width_mm", f.line_width_mm);
+  require_positive("field.length_mm", f.length_mm, kMaxFieldSide_mm);
+  require_positive("field.width_mm", f.width_mm, kMaxFieldSide_mm);
+  require_positive("field.border_mm", f.border_mm, kMaxBorder_mm);
+  require_positive("field.line_width_mm", f.line_width_mm, kMaxLineWidth_mm);
+  // The rest are bounded above by the field itself (below): the goal inside the width,
+  // the net inside the border, the boxes, marks and circle inside the field.
   require_positive("field.goal_width_mm", f.goal_width_mm);
   require_positive("field.goal_depth_mm", f.goal_depth_mm);
   require_positive("field.goal_post_diameter_mm", f.goal_post_diameter_mm);
@@ -80,7 +96,6 @@ void validate_field(const FieldDef& f) {
   require_non_negative("field.penalty_area_width_mm", f.penalty_area_width_mm);
   require_positive("field.penalty_mark_distance_mm", f.penalty_mark_distance_mm);
   require_positive("field.centre_circle_diameter_mm", f.centre_circle_diameter_mm);
-
   const float half_length = f.length_mm / 2;
   if (!(f.goal_width_mm + f.goal_post_diameter_mm < f.width_mm))
     config_fail("field.goal_width_mm",  // the posts stand on the goal line, inside the touchlines
@@ -99,29 +114,46 @@ void validate_field(const FieldDef& f) {
                 f.width_mm);
 }
 
+/// Ball and feet: from a marble to a beach ball, feet from 1 cm to 1 m.
+constexpr float kMinBody_mm = 10.f, kMaxBody_mm = 1000.f;
+/// Masses from 1 g (a table-tennis ball is 2.7 g) to a heavy robot; the ratio of the two
+/// stays within 1e5 (the extreme the test drives).
+constexpr float kMinBallMass_kg = 0.001f, kMaxBallMass_kg = 10.f;
+constexpr float kMinFootMass_kg = 0.01f, kMaxFootMass_kg = 100.f;
+/// Rolling resistance up to 10 g (a 10 m/s shot stops within 0.1 s), drag up to 100/s.
+constexpr float kMaxRollingDecel_mm_s2 = 100000.f, kMaxLinearDamping_1_s = 100.f;
+/// Coulomb friction: rubber on concrete is about 1.
+constexpr float kMaxFriction = 10.f;
+/// Box2D steps and solver iterations: 100 of either is 10-50 times the usual cost per tick;
+/// more would make a match crawl without changing it.
+constexpr int kMaxSubsteps = 100, kMaxIterations = 100;
+
 void validate_physics(const PhysicsDef& p) {
-  require_positive("physics.ball_diameter_mm", p.ball_diameter_mm);
-  require_positive("physics.ball_mass_kg", p.ball_mass_kg);
+  require_range("physics.ball_diameter_mm", p.ball_diameter_mm, kMinBody_mm, kMaxBody_mm);
+  require_range("physics.ball_mass_kg", p.ball_mass_kg, kMinBallMass_kg, kMaxBallMass_kg);
   require_fraction("physics.ball_restitution", p.ball_restitution);
-  require_non_negative("physics.ball_rolling_decel_mm_s2", p.ball_rolling_decel_mm_s2);
-  require_non_negative("physics.ball_linear_damping", p.ball_linear_damping);
-  require_positive("physics.foot_length_mm", p.foot_length_mm);
-  require_positive("physics.foot_width_mm", p.foot_width_mm);
-  require_positive("physics.foot_mass_kg", p.foot_mass_kg);
-  require_non_negative("physics.foot_friction", p.foot_friction);
+  require_non_negative("physics.ball_rolling_decel_mm_s2", p.ball_rolling_decel_mm_s2, kMaxRollingDecel_mm_s2);
+  require_non_negative("physics.ball_linear_damping", p.ball_linear_damping, kMaxLinearDamping_1_s);
+  require_range("physics.foot_length_mm", p.foot_length_mm, kMinBody_mm, kMaxBody_mm);
+  require_range("physics.foot_width_mm", p.foot_width_mm, kMinBody_mm, kMaxBody_mm);
+  require_range("physics.foot_mass_kg", p.foot_mass_kg, kMinFootMass_kg, kMaxFootMass_kg);
+  require_non_negative("physics.foot_friction", p.foot_friction, kMaxFriction);
   require_fraction("physics.wall_restitution", p.wall_restitution);
   require_fraction("physics.post_restitution", p.post_restitution);
   require_fraction("physics.net_restitution", p.net_restitution);
-  if (p.substeps < 1) config_fail("physics.substeps", ">= 1", p.substeps);
-  if (p.velocity_iterations < 1) config_fail("physics.velocity_iterations", ">= 1", p.velocity_iterations);
-  if (p.position_iterations < 1) config_fail("physics.position_iterations", ">= 1", p.position_iterations);
+  require_count("physics.substeps", p.substeps, 1, kMaxSubsteps);
+  require_count("physics.velocity_iterations", p.velocity_iterations, 1, kMaxIterations);
+  require_count("physics.position_iterations", p.position_iterations, 1, kMaxIterations);
 }
 
+constexpr float kMaxDuration_s = 1e9f;
+
 void validate_match(const MatchDef& m) {
-  if (m.team_size < 1 || m.team_size > kMaxTeamSize)
-    config_fail("match.team_size", ("1.." + std::to_string(kMaxTeamSize)).c_str(), m.team_size);
-  require_positive("match.duration_s", m.duration_s);
-  require_positive("match.foot_separation_mm", m.foot_separation_mm);
+  require_count("match.team_size", m.team_size, 1, kMaxTeamSize);
+  // Long enough for learning's endless episodes (SingleRobotSim asks for 1e9 s); the clock
+  // counts whole microseconds in an int64_t, exact far beyond it.
+  require_positive("match.duration_s", m.duration_s, kMaxDuration_s);
+  require_positive("match.foot_separation_mm", m.foot_separation_mm, kMaxBody_mm);
 }
 
 } // namespace

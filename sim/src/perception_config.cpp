@@ -35,6 +35,8 @@ void bind(IniSchema& s, PerceptionDef& d) {
 void validate(const PerceptionDef& d) {
   if (!(d.camera.field_of_view_rad > 0 && d.camera.field_of_view_rad < kPi))
     config_fail("camera.field_of_view_rad", "in (0, pi)", d.camera.field_of_view_rad);
+  require_range("camera.min_pitch_rad", d.camera.min_pitch_rad, -kPi, kPi);
+  require_range("camera.max_pitch_rad", d.camera.max_pitch_rad, -kPi, kPi);
   if (!(d.camera.min_pitch_rad < d.camera.max_pitch_rad))
     config_fail("camera.min_pitch_rad", "< camera.max_pitch_rad = " + std::to_string(d.camera.max_pitch_rad),
          d.camera.min_pitch_rad);

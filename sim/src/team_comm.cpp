@@ -3,6 +3,8 @@
 #include "touchline/random.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <string>
 
 namespace touchline::sim {
@@ -15,7 +17,8 @@ void bind(IniSchema& s, CommDef& d) {
 }
 
 void validate(const CommDef& d) {
-  if (d.max_bytes < 0) config_fail("comm.max_bytes", ">= 0", d.max_bytes);
+  // act_t carries the message's length in an int16_t.
+  require_count("comm.max_bytes", d.max_bytes, 0, std::numeric_limits<int16_t>::max());
   require_positive("comm.max_rate_hz", d.max_rate_hz);
   require_non_negative("comm.latency_ms", d.latency_ms);
   require_fraction("comm.loss_probability", d.loss_probability);

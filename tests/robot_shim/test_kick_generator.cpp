@@ -388,6 +388,26 @@ TEST(KickConfig, BadValuesAreOneLineErrorsNamingTheKey) {
   EXPECT_EQ(error_for("fine", "[kick]\nbackswing_mm = 0\n"), "");
 }
 
+TEST(KickConfig, InfiniteNanAndHugeValuesAreErrorsNamingTheKey) {
+  EXPECT_EQ(error_for("inf", "[kick]\nprepare_s = inf\n"),
+            ::testing::TempDir() + "kick_config_inf.ini: kick.prepare_s must be a finite number (got 'inf')");
+  EXPECT_EQ(error_for("huge", "[dribble]\nswing_length_mm = 1e30\n"),
+            ::testing::TempDir() + "kick_config_huge.ini: dribble.swing_length_mm must be in (0, 1000] (got 1e+30)");
+  EXPECT_NE(error_for("recover", "[kick]\nrecover_s = 1e9\n").find("kick.recover_s must be in [0, 10]"),
+            std::string::npos);
+  EXPECT_NE(error_for("aim", "[kick]\naim_speed_rad_s = -inf\n").find("kick.aim_speed_rad_s"), std::string::npos);
+}
+
+TEST(KickConfig, ADirectoryIsNoKickFile) {
+  const std::string dir = std::string(TOUCHLINE_SOURCE_DIR) + "/config";
+  try {
+    load_kick_def(dir);
+    FAIL() << "a directory read as an empty kick file";
+  } catch (const ConfigError& e) {
+    EXPECT_STREQ(e.what(), (dir + ": cannot open config file (it is a directory)").c_str());
+  }
+}
+
 TEST(KickConfig, MissingFileIsAnErrorNamingThePath) {
   const std::string path = ::testing::TempDir() + "no_such_kick.ini";
   try {

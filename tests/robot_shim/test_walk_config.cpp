@@ -93,7 +93,7 @@ TEST(WalkConfig, UnknownKeyIsAnErrorNamingTheKeyAndFile) {
 
 TEST(WalkConfig, NegativePeriodIsAnErrorNamingTheKeyAndValue) {
   const std::string message = error_for("period", "[walk]\nperiod_s = -1\n");
-  EXPECT_NE(message.find("walk_config_period.ini: walk.period_s must be > 0 (got -1)"),
+  EXPECT_NE(message.find("walk_config_period.ini: walk.period_s must be in [0.02, 10] (got -1)"),
             std::string::npos)
       << message;
 }
@@ -112,6 +112,28 @@ TEST(WalkConfig, OtherOutOfRangeValuesAreErrors) {
   EXPECT_NE(error_for("sep", "[walk]\nfoot_separation_mm = -5\n").find("walk.foot_separation_mm"),
             std::string::npos);
   EXPECT_NE(error_for("nan", "[walk]\nperiod_s = nan\n").find("walk.period_s"), std::string::npos);
+}
+
+TEST(WalkConfig, InfiniteNanAndHugeValuesAreErrorsNamingTheKey) {
+  // inf once passed "> 0"; a walk speed of 1e30 mm/s became a Box2D velocity.
+  EXPECT_EQ(error_for("inf", "[walk]\nperiod_s = inf\n"),
+            ::testing::TempDir() + "walk_config_inf.ini: walk.period_s must be a finite number (got 'inf')");
+  EXPECT_EQ(error_for("huge", "[walk]\nmax_forward_mm_s = 1e30\n"),
+            ::testing::TempDir() + "walk_config_huge.ini: walk.max_forward_mm_s must be in [0, 1000] (got 1e+30)");
+  EXPECT_NE(error_for("neg_inf", "[walk]\naccel_left_mm_s2 = -inf\n").find("walk.accel_left_mm_s2"),
+            std::string::npos);
+  EXPECT_NE(error_for("turn", "[walk]\nmax_turn_rad_s = 100\n").find("walk.max_turn_rad_s must be in [0, 6.3]"),
+            std::string::npos);
+}
+
+TEST(WalkConfig, ADirectoryIsNoWalkFile) {
+  const std::string dir = std::string(TOUCHLINE_SOURCE_DIR) + "/config";
+  try {
+    load_walk_def(dir);
+    FAIL() << "a directory read as an empty walk file";
+  } catch (const ConfigError& e) {
+    EXPECT_STREQ(e.what(), (dir + ": cannot open config file (it is a directory)").c_str());
+  }
 }
 
 TEST(WalkConfig, SideStepsThatWouldCrossTheFeetAreAnError) {

@@ -83,12 +83,15 @@ TEST(PerceptionConfig, BadValuesAreOneLineErrorsNamingTheKey) {
   EXPECT_EQ(error_after("noise.ball_miss_probability=1.5"), "noise.ball_miss_probability must be in [0, 1] (got 1.5)");
   EXPECT_EQ(error_after("noise.robot_miss_probability=-0.1"),
             "noise.robot_miss_probability must be in [0, 1] (got -0.1)");
-  EXPECT_EQ(error_after("noise.distance_sd_fraction=-1"), "noise.distance_sd_fraction must be >= 0 (got -1)");
-  EXPECT_EQ(error_after("noise.bearing_sd_rad=nan"), "noise.bearing_sd_rad must be >= 0 (got nan)");
+  EXPECT_EQ(error_after("noise.distance_sd_fraction=-1"),
+            "noise.distance_sd_fraction must be in [0, 1000000] (got -1)");
+  EXPECT_EQ(error_after("noise.bearing_sd_rad=nan"),
+            "override 'noise.bearing_sd_rad=nan': noise.bearing_sd_rad must be a finite number (got 'nan')");
+  EXPECT_EQ(error_after("camera.max_pitch_rad=1e30"), "camera.max_pitch_rad must be in [-3.141593, 3.141593] (got 1e+30)");
   EXPECT_EQ(error_after("camera.field_of_view_rad=4"), "camera.field_of_view_rad must be in (0, pi) (got 4)");
   EXPECT_NE(error_after("camera.min_pitch_rad=0.6").find("camera.min_pitch_rad must be < camera.max_pitch_rad"),
             std::string::npos);
-  EXPECT_EQ(error_after("sonar.range_mm=0"), "sonar.range_mm must be > 0 (got 0)");
+  EXPECT_EQ(error_after("sonar.range_mm=0"), "sonar.range_mm must be in (0, 1000000] (got 0)");
   EXPECT_EQ(error_after("camera.occluder_radius_mm=0"), ""); // 0 switches occlusion off
   EXPECT_EQ(error_after("sonar.sees_goal_posts=false"), "");
   EXPECT_NE(error_after("sonar.sees_goal_posts=maybe").find("sonar.sees_goal_posts"), std::string::npos);

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -86,16 +88,19 @@ std::string validation_error(const RulesDef& rules) {
 TEST(Rules, BadValuesNameTheKey) {
   RulesDef r;
   r.ready_s = -1;
-  EXPECT_EQ(validation_error(r), "rules.ready_s must be >= 0 (got -1)");
+  EXPECT_EQ(validation_error(r), "rules.ready_s must be in [0, 1000000] (got -1)");
   r = RulesDef{};
   r.half_s = 0;
-  EXPECT_EQ(validation_error(r), "rules.half_s must be > 0 (got 0)");
+  EXPECT_EQ(validation_error(r), "rules.half_s must be in (0, 1000000] (got 0)");
   r = RulesDef{};
   r.first_kickoff_team = 2;
   EXPECT_EQ(validation_error(r), "rules.first_kickoff_team must be 0 or 1 (got 2)");
   r = RulesDef{};
   r.collision.contact_distance_mm = 0;
-  EXPECT_EQ(validation_error(r), "rules.contact_distance_mm must be > 0 (got 0)");
+  EXPECT_EQ(validation_error(r), "rules.contact_distance_mm must be in (0, 1000000] (got 0)");
+  r = RulesDef{};
+  r.getup_s = INFINITY; // set in code, past the file reader: validate refuses it all the same
+  EXPECT_EQ(validation_error(r), "rules.getup_s must be in [0, 1000000] (got inf)");
   EXPECT_EQ(validation_error(RulesDef{}), "");
 }
 

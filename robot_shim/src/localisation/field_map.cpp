@@ -64,8 +64,16 @@ FieldMap load_field_map(const std::string& path) {
       .bind("field.goal_width_mm", &map.goal_width_mm, "between the posts' centres, mm")
       .bind("field.penalty_mark_distance_mm", &map.penalty_mark_distance_mm, "from the goal line, mm");
   schema.read_file(path, /*ignore_unknown=*/true);
-  if (!(map.length_mm > 0 && map.width_mm > 0 && map.goal_width_mm > 0 && map.goal_width_mm < map.width_mm))
-    throw ConfigError(path + ": [field] sizes must be positive with the goal narrower than the field");
+  try {
+    // The world accepts no field longer or wider (sim/src/config.cpp); squares of these
+    // stay far inside a float in the filters.
+    require_positive("field.length_mm", map.length_mm, kMaxFieldSide_mm);
+    require_positive("field.width_mm", map.width_mm, kMaxFieldSide_mm);
+    require_positive("field.goal_width_mm", map.goal_width_mm, map.width_mm);
+    require_positive("field.penalty_mark_distance_mm", map.penalty_mark_distance_mm, map.length_mm / 2);
+  } catch (const ConfigError& e) {
+    throw ConfigError(path + ": " + e.what());
+  }
   return map;
 }
 

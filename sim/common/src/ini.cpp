@@ -1,7 +1,12 @@
 #include "touchline/ini.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <sstream>
+#include <system_error>
+
+#include <sys/stat.h>
 
 namespace po = boost::program_options;
 
@@ -21,9 +26,18 @@ void store_stream(const po::options_description& options, std::istream& in, cons
 } // namespace
 
 void IniSchema::read_file(const std::string& path, bool ignore_unknown) const {
+  // A directory opens as a stream that reads nothing: without this, a wrong path read as
+  // an empty file and every key silently kept its default.
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+    throw ConfigError(path + ": cannot open config file (it is a directory)");
+  errno = 0;
   std::ifstream in(path);
-  if (!in) throw ConfigError(path + ": cannot open config file");
+  if (!in)
+    throw ConfigError(path + ": cannot open config file (" +
+                      (errno ? std::strerror(errno) : std::string("unreadable")) + ")");
   store_stream(options_, in, path, ignore_unknown);
+  if (in.bad()) throw ConfigError(path + ": cannot read config file");
 }
 
 void IniSchema::apply_override(const std::string& assignment) const {

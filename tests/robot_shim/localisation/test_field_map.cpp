@@ -2,6 +2,8 @@
 // agreement with the world's own field geometry (the one place a test may look at both).
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "touchline/ini.hpp"
 #include "touchline/robot/localisation/field_map.hpp"
 #include "touchline/sim/field.hpp"
@@ -78,6 +80,42 @@ TEST(LoadFieldMap, ReadsTheFieldSectionOfTheWorldsConfigAndSkipsTheRest) {
   const auto classic = touchline::robot::localisation::load_field_map(TOUCHLINE_SOURCE_DIR "/config/spl2011.ini");
   EXPECT_EQ(classic.length_mm, 6000.f);
   EXPECT_THROW(touchline::robot::localisation::load_field_map("/nonexistent.ini"), touchline::ConfigError);
+}
+
+/// The ConfigError message load_field_map gives for a file holding `text`.
+std::string field_map_error(const std::string& text) {
+  const std::string path = ::testing::TempDir() + "field_map_bad.ini";
+  std::ofstream(path) << text;
+  try {
+    touchline::robot::localisation::load_field_map(path);
+  } catch (const touchline::ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(LoadFieldMap, InfiniteNanHugeAndNegativeSizesAreErrorsNamingTheKey) {
+  const std::string path = ::testing::TempDir() + "field_map_bad.ini";
+  EXPECT_EQ(field_map_error("[field]\nlength_mm = inf\n"),
+            path + ": field.length_mm must be a finite number (got 'inf')");
+  EXPECT_EQ(field_map_error("[field]\nwidth_mm = nan\n"), path + ": field.width_mm must be a finite number (got 'nan')");
+  EXPECT_EQ(field_map_error("[field]\nlength_mm = 1e30\n"), path + ": field.length_mm must be in (0, 30000] (got 1e+30)");
+  EXPECT_EQ(field_map_error("[field]\nwidth_mm = -4000\n"), path + ": field.width_mm must be in (0, 30000] (got -4000)");
+  EXPECT_EQ(field_map_error("[field]\ngoal_width_mm = 5000\n"),
+            path + ": field.goal_width_mm must be in (0, 4000] (got 5000)");
+  EXPECT_EQ(field_map_error("[field]\npenalty_mark_distance_mm = 4000\n"),
+            path + ": field.penalty_mark_distance_mm must be in (0, 3000] (got 4000)");
+  EXPECT_EQ(field_map_error("[physics]\nball_mass_kg = inf\n"), ""); // not the robot's business: the world checks it
+}
+
+TEST(LoadFieldMap, ADirectoryIsNoConfigFile) {
+  const std::string dir = TOUCHLINE_SOURCE_DIR "/config";
+  try {
+    touchline::robot::localisation::load_field_map(dir);
+    FAIL() << "a directory read as an empty field";
+  } catch (const touchline::ConfigError& e) {
+    EXPECT_EQ(std::string(e.what()), dir + ": cannot open config file (it is a directory)");
+  }
 }
 
 } // namespace

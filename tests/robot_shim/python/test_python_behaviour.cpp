@@ -393,6 +393,78 @@ TEST_F(PythonRobot, AddedAndRemovedFilesAreChanges) {
   expect_walking(step(), 150);
 }
 
+// --- hung Python: the tick guard ----------------------------------------------------------
+
+constexpr int64_t kShortTimeoutUs = 100000; // the bound these tests give a tick
+
+TEST_F(PythonRobot, ATickThatLoopsForeverIsInterruptedThenNotCalledUntilTheFilesChange) {
+  install("loops_forever.py");
+  auto d = def();
+  d.tick_timeout_us = kShortTimeoutUs;
+  start(d);
+  for (int i = 0; i < 10; ++i) expect_error_stand(step());
+  EXPECT_EQ(module().attr("CALLS").cast<int>(), 1); // a hung tick is not tried every frame
+  const std::string log = log_.str();
+  EXPECT_EQ(count(log, "robot 0/2: tick() timed out, not called again until the files change "
+                       "(standing, chest LED magenta until fixed):"), 1) << log;
+  EXPECT_EQ(count(log, "touchline.TickTimeout: ran longer than 100 ms of wall time"), 1) << log;
+  EXPECT_NE(log.find("behaviour.py\", line 11, in tick"), std::string::npos) << log; // where it hung
+
+  install("walker.py");
+  let_watcher_look();
+  expect_walking(step(), 150);
+  EXPECT_EQ(count(log_.str(), "robot 0/2: reloaded behaviour (changed: behaviour.py)"), 1) << log_.str();
+}
+
+TEST_F(PythonRobot, ATickThatBlocksInACallIsInterruptedToo) {
+  install("sleeps_forever.py"); // time.sleep(1e9): no bytecode runs until the call returns
+  auto d = def();
+  d.tick_timeout_us = kShortTimeoutUs;
+  start(d);
+  for (int i = 0; i < 3; ++i) expect_error_stand(step());
+  EXPECT_EQ(module().attr("CALLS").cast<int>(), 1);
+  EXPECT_EQ(count(log_.str(), "touchline.TickTimeout"), 1) << log_.str();
+  EXPECT_NE(log_.str().find("time.sleep(1e9)"), std::string::npos) << log_.str();
+
+  install("walker.py");
+  let_watcher_look();
+  expect_walking(step(), 150);
+}
+
+TEST_F(PythonRobot, AModuleThatHangsAtImportIsInterruptedAndItsFixLoads) {
+  install("hangs_at_import.py");
+  auto d = def();
+  d.tick_timeout_us = kShortTimeoutUs;
+  start(d); // not a usage error: the shim plays on, standing, and waits for the fix
+  EXPECT_FALSE(behaviour_->healthy());
+  expect_error_stand(step());
+  EXPECT_NE(log_.str().find("importing behaviour failed"), std::string::npos) << log_.str();
+  EXPECT_EQ(count(log_.str(), "touchline.TickTimeout"), 1) << log_.str();
+
+  install("walker.py");
+  let_watcher_look();
+  expect_walking(step(), 150);
+
+  install("hangs_at_import.py"); // and the same when an edit during play hangs the reload
+  let_watcher_look();
+  expect_error_stand(step());
+  EXPECT_EQ(count(log_.str(), "touchline.TickTimeout"), 2) << log_.str();
+  install("walker.py");
+  let_watcher_look();
+  expect_walking(step(), 150);
+}
+
+TEST_F(PythonRobot, TimeTheProcessSpentStoppedDoesNotCount) {
+  // 1.4 s in tick(), but a SIGCONT (the process was stopped and continued) 0.7 s in:
+  // the 1 s bound counts from there, so the tick finishes.
+  install("stopped_midway.py");
+  auto d = def();
+  d.tick_timeout_us = 1000000;
+  start(d);
+  expect_walking(step(), 150);
+  EXPECT_EQ(log_.str(), "");
+}
+
 TEST(PythonBehaviours, TwoInOneProcessKeepTheirOwnModulesAndParams) {
   std::string pattern = (fs::temp_directory_path() / "touchline-py-XXXXXX").string();
   ASSERT_NE(mkdtemp(pattern.data()), nullptr);

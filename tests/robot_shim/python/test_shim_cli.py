@@ -41,7 +41,8 @@ def test_bad_python_behaviour_is_one_line_and_exit_2(args, message):
 def test_help_documents_the_python_behaviour_and_cpu_charging():
     result = run("--help")
     assert result.returncode == 0
-    for text in ["--python-dir", "--charge-cpu", "py:MODULE", "robot.params", "0xff00ff", "33.3 ms"]:
+    for text in ["--python-dir", "--charge-cpu", "py:MODULE", "robot.params", "0xff00ff", "33.3 ms",
+                 "--tick-timeout-ms", "touchline.TickTimeout", "128 + the"]:
         assert text in result.stdout, text
     assert str(ROOT / "behaviour_py") in result.stdout  # the default --python-dir
     assert "--data-dir" in result.stdout and str(ROOT / "config") in result.stdout  # and --data-dir's

@@ -36,6 +36,10 @@ struct RobotId {
 };
 
 constexpr int kMaxTeamSize = 7;
+/// Longest field length or width a world config may give (the robots' maps agree): twice
+/// the largest RoboCup field (AdultSize, 14 x 9 m), and short enough that the world's
+/// longest wall stays within what Box2D handles (sim/src/config.cpp).
+constexpr float kMaxFieldSide_mm = 30000.f;
 constexpr int kMaxTicksPerFrame = 4;
 constexpr int64_t kMotionTickUs = 10000; ///< 100 Hz motion
 constexpr int kFramesPerCycle = 3;       ///< 3 camera frames (30 Hz) ...

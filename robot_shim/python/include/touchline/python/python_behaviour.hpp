@@ -17,6 +17,15 @@
 // per change of the files. The behaviour keeps being ticked, so it recovers as soon as
 // tick() succeeds again or the files are fixed ("reloaded" is logged).
 //
+// Hung code: tick() (with the look at the files and a reload's import) and the first
+// import are guarded by a TickGuard (tick_guard.hpp). Python that runs longer than
+// `tick_timeout_us` of wall time is interrupted (touchline.TickTimeout raised in it, its
+// traceback logged once); a tick() that timed out is not called again until the files
+// change (a hung tick would otherwise cost that much wall time every frame), and the
+// robot stands meanwhile as for any error. After python::request_stop() (robot_shim's
+// SIGTERM/SIGINT) no Python runs any more: running code is interrupted, and tick()
+// returns error_request() at once.
+//
 // Needs a running interpreter (pybind11::scoped_interpreter: robot_shim holds one for
 // the process) and runs on that interpreter's thread. Several PythonBehaviours may live
 // in one process: each keeps its own modules and robot.params/team/player, swapped into
@@ -60,6 +69,10 @@ struct PythonBehaviourDef {
   std::ostream* log = nullptr;       ///< errors and reloads; nullptr: std::cerr
   int64_t reload_check_interval_us = 250000; ///< wall time between looks at the files; 0: every tick
   std::function<int64_t()> wall_clock_us;    ///< steady wall clock, microseconds; empty: std::chrono::steady_clock
+  /// Wall time Python may run within one tick() (or the first import) before it is
+  /// interrupted; 0: never. More than sim_world's 1000 ms robot timeout by default, so a
+  /// slow but finishing tick is the world's to judge; the bound is for code that hangs.
+  int64_t tick_timeout_us = 2000000;
 };
 
 class PythonBehaviour : public api::Behaviour {
@@ -116,6 +129,7 @@ class PythonBehaviour : public api::Behaviour {
   int64_t next_check_us_ = 0;
   bool healthy_ = false;
   bool reported_ = false; ///< an error was logged since the files last changed
+  bool timed_out_ = false; ///< tick() ran past tick_timeout_us: not called again until the files change
   int64_t loads_ = 0;
 };
 
