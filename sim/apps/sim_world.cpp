@@ -52,6 +52,7 @@ void write_summary_json(const std::string& path, const sim::Match& match, const 
       << "  \"malformed\": " << s.malformed << ",\n"
       << "  \"stale\": " << s.stale << ",\n"
       << "  \"interrupted\": " << (s.interrupted ? "true" : "false") << ",\n"
+      << "  \"score\": [" << match.game().score[0] << ", " << match.game().score[1] << "],\n"
       << "  \"ball\": {\"x_mm\": " << truth.ball.x_mm << ", \"y_mm\": " << truth.ball.y_mm << "},\n"
       << "  \"robots\": [";
   for (size_t i = 0; i < truth.robots.size(); ++i) {
