@@ -222,7 +222,7 @@ class Launcher:
         announced = False
         while world.poll() is None:
             if watch.kicked_off and not announced:  # from here on a dying shim no longer stops the match
-                print(f"launch: kick-off, all {2 * a.team_size} robots joined", flush=True)
+                watch.say(f"launch: kick-off, all {2 * a.team_size} robots joined")
                 announced = True
             if (rc := self.interrupted()) is not None:
                 return rc
@@ -239,6 +239,7 @@ class Launcher:
             print(f"launch: stopping the match: sim_world {world.why()} (logs in {self.logdir})", file=sys.stderr)
             return EXIT_FAILED
         keeper.after_match(SHIMS_EXIT_S, lambda: self.stop.signum is not None)  # they end on FINISHED
+        watch.stop()  # the bar ends before the summary starts
         if (rc := self.interrupted()) is not None:
             return rc
         if not summary_path.exists():

@@ -9,6 +9,7 @@ channel and skipped. Anything else that goes wrong in the watching thread is kep
 from __future__ import annotations
 
 import select
+import sys
 import threading
 import time
 import traceback
@@ -138,6 +139,14 @@ class MatchWatch:
         restarted shim may take it over."""
         msg = self.status.get((team, player))
         return msg is not None and msg.state == msg.TIMED_OUT
+
+    def say(self, line: str, file=None) -> None:
+        """Prints a line during the match, above the progress bar if there is one."""
+        file = file or sys.stdout
+        if self._bar is not None:
+            self._bar.write(line, file=file)
+        else:
+            print(line, file=file, flush=True)
 
     def malformed_total(self) -> int:
         return sum(self.malformed.values())

@@ -111,7 +111,7 @@ class ShimKeeper:
         death = Death(shim.team, shim.player, self.watch.sim_s, how, outcome)
         shim.deaths.append(death)
         self.deaths.append(death)
-        print(f"launch: at {death.sim_s:.1f} s {death.line()}; {then}", file=sys.stderr, flush=True)
+        self.watch.say(f"launch: at {death.sim_s:.1f} s {death.line()}; {then}", file=sys.stderr)
         return death
 
     def _died(self, shim: Shim) -> None:
@@ -139,8 +139,8 @@ class ShimKeeper:
         death.restarted_sim_s = self.watch.sim_s
         death.outcome = f"restarted at {death.restarted_sim_s:.1f} s; the match ended before the new shim took the robot back"
         shim.child = self.children.start(shim.name, shim.argv, f"{shim.name}.restart{shim.restarts}")
-        print(f"launch: at {self.watch.sim_s:.1f} s restarted {shim.name} (pid {shim.child.pid})",
-              file=sys.stderr, flush=True)
+        self.watch.say(f"launch: at {self.watch.sim_s:.1f} s restarted {shim.name} (pid {shim.child.pid})",
+                       file=sys.stderr)
 
     def summary(self) -> list[dict]:
         return [{"team": d.team, "player": d.player, "sim_s": d.sim_s, "how": d.how, "outcome": d.outcome,

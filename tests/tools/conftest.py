@@ -9,11 +9,14 @@ from __future__ import annotations
 import os
 import queue
 import select
+import signal
 import subprocess
 import sys
 import threading
 import time
 from pathlib import Path
+
+import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
 BUILD = Path(os.environ.get("TOUCHLINE_BUILD_DIR", ROOT / "build"))
@@ -22,10 +25,30 @@ LCM_URL = "udpm://239.255.76.67:7667?ttl=0"
 WAIT_S = 60  # the longest any step of a test waits before failing
 
 
+@pytest.fixture(autouse=True)
+def no_launcher_left_behind():
+    """A test that fails half-way leaves no launcher (nor anything under it) running."""
+    yield
+    for launch in Launch.started:
+        if launch.popen.poll() is None:
+            launch.tree()
+            launch.popen.terminate()
+            try:
+                launch.popen.wait(timeout=10)
+            except subprocess.TimeoutExpired:
+                launch.popen.kill()
+                launch.popen.wait()
+        for pid in wait_until_gone(sorted(launch.seen), timeout=10):
+            os.kill(pid, signal.SIGKILL)
+    Launch.started.clear()
+
+
 class Launch:
     """tools/launch.py in the background, in a session of its own (as a terminal would run
     tools/match); its output lines are collected as they come. `own_netns` makes it enter
     a namespace of its own as tools/match does, instead of playing on this one's bus."""
+
+    started: list = []  # every launcher a test started, for no_launcher_left_behind
 
     def __init__(self, *args, own_netns: bool = False):
         env = dict(os.environ)
@@ -34,6 +57,8 @@ class Launch:
         self.popen = subprocess.Popen([*LAUNCH, *map(str, args)], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                                       text=True, env=env, start_new_session=True)
         self.pid = self.popen.pid
+        self.seen: set[int] = set()  # every process seen under it
+        Launch.started.append(self)
         self.stdout: list[str] = []
         self.stderr: list[str] = []
         self._lines: "queue.Queue[str]" = queue.Queue()
@@ -75,10 +100,17 @@ class Launch:
     def output(self) -> str:
         return "\n".join(self.stdout + self.stderr)
 
+    def tree(self) -> list[int]:
+        """Every living process under the launcher."""
+        processes = descendants(self.pid)
+        self.seen.update(processes)
+        return processes
+
     def child(self, needle: str) -> int:
         """The pid of the launcher's child whose command line contains `needle`."""
-        matches = [pid for pid in descendants(self.pid) if needle in cmdline(pid)]
-        assert len(matches) == 1, f"{needle!r} among {[cmdline(p) for p in descendants(self.pid)]}"
+        processes = self.tree()
+        matches = [pid for pid in processes if needle in cmdline(pid)]
+        assert len(matches) == 1, f"{needle!r} among {[cmdline(p) for p in processes]}"
         return matches[0]
 
     def shim(self, team: int, player: int) -> int:

@@ -10,7 +10,7 @@ import os
 import signal
 
 import pytest
-from conftest import LCM_URL, Launch, StatusListener, alive, cmdline, descendants, wait_until_gone
+from conftest import LCM_URL, Launch, StatusListener, alive, cmdline, wait_until_gone
 
 # 1 v 1 with the C++ goto behaviour, paced at 2x the wall clock; the world marks a robot
 # silent for 300 ms inactive.
@@ -105,7 +105,7 @@ def test_a_signal_to_the_launcher_stops_every_process_in_one_line(sig, code):
     # As tools/match runs it: the launcher enters a network namespace of its own.
     match = Launch(*ENDLESS, own_netns=True)
     match.wait_for_line("launch: kick-off,")
-    processes = descendants(match.pid)
+    processes = match.tree()
     assert sorted("sim_world" in cmdline(p) for p in processes) == [False, False, True], \
         "sim_world and two robot_shims, right under the launcher: " + str([cmdline(p) for p in processes])
     if sig == signal.SIGINT:
@@ -120,7 +120,7 @@ def test_a_signal_to_the_launcher_stops_every_process_in_one_line(sig, code):
 def test_a_killed_launcher_leaves_no_process_behind():
     match = Launch(*ENDLESS)
     match.wait_for_line("launch: kick-off,")
-    processes = descendants(match.pid)
+    processes = match.tree()
     assert len(processes) == 3
     os.kill(match.pid, signal.SIGKILL)
     assert match.wait() == -signal.SIGKILL
@@ -160,7 +160,7 @@ def test_every_process_gets_a_fresh_match_secret_in_its_environment_only():
     for _ in range(2):
         match = Launch(*ENDLESS)
         match.wait_for_line("launch: kick-off,")
-        processes = descendants(match.pid)
+        processes = match.tree()
         seen = set()
         for pid in processes:
             environ = open(f"/proc/{pid}/environ", "rb").read().split(b"\0")

@@ -42,6 +42,9 @@ class FakeWatch:
     def timed_out(self, team, player):
         return (team, player) in self.out
 
+    def say(self, line, file=None):
+        print(line, file=file)
+
 
 def keeper(restart):
     children, watch = FakeChildren(), FakeWatch()
