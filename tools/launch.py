@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Plays a headless Touchline match: starts sim_world and one robot_shim per robot, waits
-for them, shuts everything down cleanly on Ctrl-C or when any process fails (naming which
-and why), and prints what happened.
+for them, shuts everything down cleanly on Ctrl-C or SIGTERM or when the world fails (naming
+which process and why), and prints what happened. A robot_shim that dies during the match
+is restarted or not (--restart-dead) and the match goes on (shim_keeper.py).
 
 Every match is recorded to an LCM event log (lcm-logger format) named by date and seed.
 By default every robot runs the Python behaviour (behaviour_py) as a team: a goalie, and
@@ -16,16 +17,23 @@ import os
 import secrets
 import shutil
 import signal
-import subprocess
 import sys
 import tempfile
 import time
 from pathlib import Path
 
+from match_processes import SECRET_ENV, Children
 from match_watch import MatchWatch
+from shim_keeper import ShimKeeper
 
 ROOT = Path(__file__).resolve().parents[1]
 DEFAULT_BUILD = ROOT / "build"
+SHIMS_EXIT_S = 10  # wall seconds the shims may take to exit once the world has ended the match
+
+# Exit codes besides 0 (a clean match) and 2 (bad options): the match stopped (a process or
+# the watcher failed), a robot_shim died (the match played to its end all the same), or a
+# signal stopped the launcher (128 + the signal).
+EXIT_FAILED, EXIT_SHIM_DIED = 1, 3
 
 # Kick-off positions (field frame, team 0 defending -x) as fractions of the half length
 # and half width, and a heading: goalie, defender, two forwards, then more supporters.
@@ -54,6 +62,11 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     p.add_argument("--mode", choices=["lockstep", "realtime", "free"], default="lockstep")
     p.add_argument("--speed", type=float, default=1.0, help="real-time multiple for realtime/free")
     p.add_argument("--seed", type=int, default=1)
+    p.add_argument("--robot-timeout-ms", type=int, help="wall time a robot may take to answer a frame before "
+                   "the world marks it inactive (sim_world's default: 1000)")
+    p.add_argument("--restart-dead", action="store_true",
+                   help="restart a robot_shim that dies during the match, once the world has marked its robot "
+                        "inactive (default: the match goes on without it); not in free mode")
     p.add_argument("--set", action="append", default=[], metavar="SECTION.KEY=VALUE",
                    help="override a world config value (repeatable), e.g. rules.half_s=300")
     p.add_argument("--build-dir", type=Path, default=DEFAULT_BUILD)
@@ -73,6 +86,11 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
             p.error(f"--team{team} must be py:SKILL or cpp:SKILL, then any ,KEY=VALUE (got '{spec}')")
     if args.duration is not None and args.duration <= 0:
         p.error("--duration must be > 0")
+    if args.robot_timeout_ms is not None and args.robot_timeout_ms <= 0:
+        p.error("--robot-timeout-ms must be > 0")
+    if args.restart_dead and args.mode == "free":
+        p.error("--restart-dead needs lockstep or realtime mode: in free mode the world never marks a "
+                "silent robot inactive, so a restarted shim could not take it over")
     return args
 
 
@@ -113,45 +131,31 @@ def read_config(config: Path) -> tuple:
             float(match.get("duration_s", 1800)))
 
 
+class StopSignal:
+    """SIGINT and SIGTERM only note which came: the launcher then stops every process itself
+    and exits with 128 + the signal, one line and no traceback."""
+
+    def __init__(self):
+        self.signum: int | None = None
+        for sig in (signal.SIGINT, signal.SIGTERM):
+            signal.signal(sig, self._note)
+
+    def _note(self, signum: int, _frame) -> None:
+        if self.signum is None:
+            self.signum = signum
+
+
 class Launcher:
-    def __init__(self, args: argparse.Namespace):
+    def __init__(self, args: argparse.Namespace, stop: StopSignal):
         self.args = args
-        # One secret per match, handed to every program in the environment (never the command line).
-        os.environ["TOUCHLINE_MATCH_SECRET"] = secrets.token_hex(32)
-        self.procs: list[tuple[str, subprocess.Popen, Path]] = []
-        self.interrupted = False
+        self.stop = stop
         self.logdir = Path(tempfile.mkdtemp(prefix="touchline-"))
-
-    def start(self, name: str, argv: list) -> None:
-        log = self.logdir / (name.replace(" ", "_").replace("/", "-") + ".log")
-        with open(log, "w") as out:
-            proc = subprocess.Popen([str(a) for a in argv], stdout=out, stderr=out, start_new_session=True)
-        self.procs.append((name, proc, log))
-
-    def stop_all(self) -> None:
-        for _, proc, _ in self.procs:
-            if proc.poll() is None:
-                proc.send_signal(signal.SIGTERM)
-        deadline = time.monotonic() + 5
-        for _, proc, _ in self.procs:
-            try:
-                proc.wait(timeout=max(0.1, deadline - time.monotonic()))
-            except subprocess.TimeoutExpired:
-                proc.kill()
-
-    def failure(self) -> str | None:
-        for name, proc, log in self.procs:
-            rc = proc.poll()
-            if rc not in (None, 0):
-                lines = log.read_text().strip().splitlines()
-                why = lines[-1] if lines else "no output"
-                return f"{name} exited with code {rc}: {why} (logs in {self.logdir})"
-        return None
+        # A fresh secret per match for the authenticated bus, in the environment only: a
+        # command line is readable by every user of the machine (ps).
+        self.children = Children(self.logdir, {**os.environ, SECRET_ENV: secrets.token_hex(32)})
 
     def run(self) -> int:
         a = self.args
-        for sig in (signal.SIGINT, signal.SIGTERM):  # stop cleanly wherever the signal lands
-            signal.signal(sig, lambda *_: setattr(self, "interrupted", True))
         bin_world = a.build_dir / "sim" / "sim_world"
         bin_shim = a.build_dir / "robot_shim" / "robot_shim"
         for b in (bin_world, bin_shim):
@@ -165,28 +169,39 @@ class Launcher:
             log = a.log_dir / f"{stamp}_seed{a.seed}.lcmlog"
             log.parent.mkdir(parents=True, exist_ok=True)
         self.half_length, self.half_width, duration_cap = read_config(a.config)
-        watch = MatchWatch(a.lcm_url, a.duration or duration_cap, show_bar=sys.stdout.isatty() and not a.no_progress)
+        watch = MatchWatch(a.lcm_url, a.duration or duration_cap, show_bar=sys.stdout.isatty() and not a.no_progress,
+                           team_size=a.team_size)
+        keeper = ShimKeeper(self.children, watch, restart=a.restart_dead)
         try:
-            rc = self.play(bin_world, bin_shim, watch, log)
+            rc = self.play(bin_world, bin_shim, watch, keeper, log)
         finally:
             watch.stop()
-            self.stop_all()
+            self.children.stop_all()
         if log and log.exists():
             print(f"launch: match log {log} ({log.stat().st_size / 1e6:.1f} MB)")
         if rc == 0:  # the processes' own logs are kept only to explain a failure
             shutil.rmtree(self.logdir, ignore_errors=True)
         return rc
 
-    def play(self, bin_world: Path, bin_shim: Path, watch: MatchWatch, log: Path | None) -> int:
+    def interrupted(self) -> int | None:
+        if self.stop.signum is None:
+            return None
+        print(f"launch: interrupted ({signal.Signals(self.stop.signum).name}), stopping every process",
+              file=sys.stderr, flush=True)
+        return 128 + self.stop.signum
+
+    def play(self, bin_world: Path, bin_shim: Path, watch: MatchWatch, keeper: ShimKeeper, log: Path | None) -> int:
         a = self.args
         summary_path = self.logdir / "summary.json"
         targets = kickoff_targets(a.team_size, self.half_length, self.half_width)
-        self.start("sim_world", [bin_world, "--config", a.config, "--set", f"match.team_size={a.team_size}",
-                                 *(["--duration", a.duration] if a.duration else []),
-                                 *[arg for item in a.set for arg in ("--set", item)],
-                                 "--mode", a.mode, "--speed", a.speed, "--seed", a.seed,
-                                 "--lcm-url", a.lcm_url, "--summary", summary_path, "--quiet",
-                                 *(["--log", log] if log else [])])
+        world = self.children.start("sim_world", [
+            bin_world, "--config", a.config, "--set", f"match.team_size={a.team_size}",
+            *(["--duration", a.duration] if a.duration else []),
+            *[arg for item in a.set for arg in ("--set", item)],
+            "--mode", a.mode, "--speed", a.speed, "--seed", a.seed,
+            *(["--robot-timeout-ms", a.robot_timeout_ms] if a.robot_timeout_ms else []),
+            "--lcm-url", a.lcm_url, "--summary", summary_path, "--quiet",
+            *(["--log", log] if log else [])])
         for team, player, x, y, theta in targets:
             spec = getattr(a, f"team{team}")
             if spec:
@@ -196,47 +211,59 @@ class Launcher:
                              "--param", f"theta={theta:.3f}"]
             else:
                 behaviour = ["--behaviour", "py", "--param", f"skill={a.skill}"]
-            self.start(f"robot_shim {team}/{player}",
-                       [bin_shim, "--team", team, "--player", player, "--walk-config", a.walk_config,
-                        "--field-config", a.config, "--lcm-url", a.lcm_url,
-                        *(["--data-dir", a.data_dir] if a.data_dir else []), *behaviour])
+            keeper.start(team, player, [bin_shim, "--team", team, "--player", player, "--walk-config", a.walk_config,
+                                        "--field-config", a.config, "--lcm-url", a.lcm_url,
+                                        *(["--data-dir", a.data_dir] if a.data_dir else []), *behaviour])
         length = f"{a.duration:.0f} s simulated" if a.duration else "two halves"
         what = a.skill if a.behaviour == "py" else "goto kick-off spots"
         if a.team0 or a.team1:
             what = f"{a.team0 or what} v {a.team1 or what}"
         print(f"launch: {2 * a.team_size} robots ({what}), {length}, {a.mode} mode, seed {a.seed}", flush=True)
-        world = self.procs[0][1]
+        announced = False
         while world.poll() is None:
-            if self.interrupted:
-                print("launch: interrupted, stopping every process", file=sys.stderr)
-                return 130
-            why = self.failure()
+            if watch.kicked_off and not announced:  # from here on a dying shim no longer stops the match
+                watch.say(f"launch: kick-off, all {2 * a.team_size} robots joined")
+                announced = True
+            if (rc := self.interrupted()) is not None:
+                return rc
+            if watch.error:
+                print(f"launch: stopping the match: the match watcher failed: {watch.error} "
+                      f"(logs in {self.logdir})", file=sys.stderr)
+                return EXIT_FAILED
+            why = keeper.check(kicked_off=announced)
             if why:
                 print(f"launch: stopping the match: {why}", file=sys.stderr)
-                return 1
+                return EXIT_FAILED
             time.sleep(0.1)  # polling child exit codes, not hiding a race
-        for name, proc, _ in self.procs:  # the shims end when the world says FINISHED
-            try:
-                proc.wait(timeout=30)
-            except subprocess.TimeoutExpired:
-                print(f"launch: {name} did not exit after the match (logs in {self.logdir})", file=sys.stderr)
-                return 1
-        why = self.failure()
-        if why:
-            print(f"launch: {why}", file=sys.stderr)
-            return 1
-        summary = json.loads(summary_path.read_text())
-        summary["events"] = [{"sim_s": t, "what": line} for t, line in watch.events]
+        if world.poll() != 0:
+            print(f"launch: stopping the match: sim_world {world.why()} (logs in {self.logdir})", file=sys.stderr)
+            return EXIT_FAILED
+        keeper.after_match(SHIMS_EXIT_S, lambda: self.stop.signum is not None)  # they end on FINISHED
+        watch.stop()  # the bar ends before the summary starts
+        if (rc := self.interrupted()) is not None:
+            return rc
+        if not summary_path.exists():
+            print(f"launch: sim_world wrote no summary (logs in {self.logdir})", file=sys.stderr)
+            return EXIT_FAILED
+        summary = json.loads(summary_path.read_text())  # the world's own word, score included: the bus may lie
+        summary["events"] = [{"sim_s": t, "what": line} for t, line in sorted(watch.events + keeper.lines())]
         summary["goals"] = [{"sim_s": e.utime / 1e6, "team": e.team} for e in watch.match_events if e.kind == e.GOAL]
         summary["penalties"] = [{"sim_s": e.utime / 1e6, "team": e.team, "player": e.player, "kind": e.text}
                                 for e in watch.match_events if e.kind == e.PENALTY]
         summary["falls"] = [{"sim_s": e.utime / 1e6, "team": e.team, "player": e.player}
                             for e in watch.match_events if e.kind == e.FALL]
-        summary["score"] = list(watch.score)
+        summary["shim_deaths"] = keeper.summary()
+        summary["launcher_malformed"] = dict(watch.malformed)
         self.report(summary, targets)
+        if watch.malformed_total():
+            print(f"  malformed messages the launcher ignored: "
+                  + ", ".join(f"{channel} {n}" for channel, n in watch.malformed.items() if n)
+                  + f" (last: {watch.last_malformed})")
+        if keeper.deaths:
+            print(f"  robot_shims that died: {len(keeper.deaths)} (their logs are in {self.logdir})")
         if a.json:
             a.json.write_text(json.dumps(summary, indent=2) + "\n")
-        return 0
+        return EXIT_SHIM_DIED if keeper.deaths else 0
 
     def report(self, summary: dict, targets: list) -> None:
         a = self.args
@@ -280,12 +307,20 @@ def clock(sim_s: float) -> str:
 
 
 def main(argv: list[str]) -> int:
+    stop = StopSignal()  # first: a Ctrl-C from here on gives one line, never a traceback
     args = parse_args(argv)
     if not args.host_network and os.environ.get("TOUCHLINE_IN_NETNS") != "1":
+        # exec, not a child: tools/netns execs the launcher again in the namespace, so this
+        # process stays the launcher and a signal sent to it (or to tools/match, which execs
+        # this) stops the match instead of orphaning it.
         netns = ROOT / "tools" / "netns"
-        return subprocess.call([str(netns), sys.executable, __file__, *argv])
-    return Launcher(args).run()
+        os.execv(netns, [str(netns), sys.executable, __file__, *argv])
+    return Launcher(args, stop).run()
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    try:
+        sys.exit(main(sys.argv[1:]))
+    except KeyboardInterrupt:  # only before main() set its handlers: nothing was started yet
+        print("launch: interrupted", file=sys.stderr)
+        sys.exit(130)

@@ -1,27 +1,52 @@
 """Follows a running match over LCM for the launcher: simulated time, real-time factor,
-score and robot status, shown as a progress bar (tqdm) and kept for the summary."""
+score and robot status, shown as a progress bar (tqdm) and kept for the summary.
+
+Anyone on the bus can publish on the channels watched here, so every message is decoded
+with the generated types and checked before it is used; one that fails is counted per
+channel and skipped. Anything else that goes wrong in the watching thread is kept in
+`error` for the launcher to report: the thread never ends silently.
+"""
 from __future__ import annotations
 
 import select
+import sys
 import threading
 import time
+import traceback
+
+CHANNELS = ("TL_GAME", "TL_STATUS", "TL_EVENT")
+MAX_TEAM_SIZE = 7  # players are numbered 1..7 (touchline/frame.hpp kMaxTeamSize)
+
+
+class Malformed(Exception):
+    """A message that decoded but says something impossible."""
+
+
+def require(ok: bool, what: str) -> None:
+    if not ok:
+        raise Malformed(what)
 
 
 class MatchWatch:
-    def __init__(self, lcm_url: str, duration_s: float, show_bar: bool):
+    def __init__(self, lcm_url: str, duration_s: float, show_bar: bool, team_size: int = MAX_TEAM_SIZE):
         import lcm
         from touchline import game_state_t, match_event_t, robot_status_t
 
         self._game_t, self._status_t, self._event_t = game_state_t, robot_status_t, match_event_t
+        self._team_size = team_size
         self.bus = lcm.LCM(lcm_url)
         self.bus.subscribe("TL_GAME", self._on_game)
         self.bus.subscribe("TL_STATUS", self._on_status)
         self.bus.subscribe("TL_EVENT", self._on_event)
-        self.sim_s = 0.0
+        self.sim_s = 0.0         # the latest simulated time any message carried
         self.score = (0, 0)
+        self.kicked_off = False  # the world published the game: every robot joined
         self.status: dict = {}   # (team, player) -> last robot_status_t
         self.events: list = []   # (sim_s, line) for robot trouble worth a summary line
         self.match_events: list = []  # decoded match_event_t: goals, penalties, falls, states
+        self.malformed = {channel: 0 for channel in CHANNELS}  # messages skipped, per channel
+        self.last_malformed = ""  # why the latest one was skipped
+        self.error: str | None = None  # why the watching thread stopped, if it failed
         self.state = "INITIAL"
         self._start = time.monotonic()
         self._stop = threading.Event()
@@ -29,34 +54,102 @@ class MatchWatch:
         if show_bar:
             from tqdm import tqdm
             self._bar = tqdm(total=round(duration_s), unit="sim s", dynamic_ncols=True, leave=True)
-        self._thread = threading.Thread(target=self._run, daemon=True)
+        self._thread = threading.Thread(target=self._run, name="match watch", daemon=True)
         self._thread.start()
 
     def _run(self) -> None:
-        fd = self.bus.fileno()
-        while not self._stop.is_set():
-            if select.select([fd], [], [], 0.1)[0]:
-                self.bus.handle()
+        try:
+            fd = self.bus.fileno()
+            while not self._stop.is_set():
+                if select.select([fd], [], [], 0.1)[0]:
+                    self.bus.handle()
+        except BaseException as e:  # kept for the launcher, which stops the match and says why
+            self.error = "".join(traceback.format_exception_only(type(e), e)).strip()
+
+    def _decode(self, channel: str, data: bytes, msg_type, check):
+        """The decoded message, or None (counted) if it does not decode or fails `check`."""
+        try:
+            msg = msg_type.decode(data)
+            check(msg)
+            return msg
+        except Exception as e:  # any decoding failure of a forged or damaged message
+            self.malformed[channel] += 1
+            self.last_malformed = f"{channel}: {type(e).__name__}: {e}"
+            return None
+
+    def _check_robot(self, team: int, player: int) -> None:
+        require(team in (0, 1), f"team {team}")
+        require(1 <= player <= self._team_size, f"player {player}")
+
+    def _check_game(self, msg) -> None:
+        require(msg.utime >= 0, f"utime {msg.utime}")
+        require(msg.INITIAL <= msg.state <= msg.FINISHED, f"state {msg.state}")
+        require(all(goals >= 0 for goals in msg.score), f"score {tuple(msg.score)}")
+        require(msg.kickoff_team in (0, 1) and msg.first_half in (0, 1) and msg.secs_remaining >= 0,
+                "kick-off team, half or clock out of range")
+
+    def _check_status(self, msg) -> None:
+        require(msg.utime >= 0, f"utime {msg.utime}")
+        self._check_robot(msg.team, msg.player)
+        require(msg.JOINED <= msg.state <= msg.REJECTED, f"state {msg.state}")
+        require(msg.frames_answered >= 0 and msg.frames_missed >= 0, "negative frame counts")
+
+    def _check_event(self, msg) -> None:
+        require(msg.utime >= 0, f"utime {msg.utime}")
+        require(msg.STATE_CHANGE <= msg.kind <= msg.BALL_OUT, f"kind {msg.kind}")
+        require(msg.team in (-1, 0, 1), f"team {msg.team}")
+        require(0 <= msg.player <= self._team_size, f"player {msg.player}")
+
+    def _advance(self, utime: int) -> None:
+        self.sim_s = max(self.sim_s, utime / 1e6)
 
     def _on_game(self, channel: str, data: bytes) -> None:
-        msg = self._game_t.decode(data)
-        self.sim_s = msg.utime / 1e6
+        msg = self._decode(channel, data, self._game_t, self._check_game)
+        if msg is None:
+            return
+        self._advance(msg.utime)
+        self.kicked_off = True
         self.score = tuple(msg.score)
         if self._bar is not None:
             self._bar.n = min(self._bar.total, round(self.sim_s))
             self._bar.set_postfix_str(f"x{self.real_time_factor():.1f} {self.state} score {self.score[0]}:{self.score[1]}")
 
     def _on_status(self, channel: str, data: bytes) -> None:
-        msg = self._status_t.decode(data)
+        msg = self._decode(channel, data, self._status_t, self._check_status)
+        if msg is None:
+            return
+        self._advance(msg.utime)
+        before = self.status.get((msg.team, msg.player))
         self.status[(msg.team, msg.player)] = msg
-        if msg.state in (msg.TIMED_OUT, msg.REJOINED, msg.REJECTED) and msg.detail:
+        changed = before is None or before.state != msg.state  # not the world's repeats of a state
+        if changed and msg.state in (msg.TIMED_OUT, msg.REJOINED, msg.REJECTED) and msg.detail:
             self.events.append((msg.utime / 1e6, f"team {msg.team} player {msg.player} {msg.detail}"))
 
     def _on_event(self, channel: str, data: bytes) -> None:
-        msg = self._event_t.decode(data)
+        msg = self._decode(channel, data, self._event_t, self._check_event)
+        if msg is None:
+            return
+        self._advance(msg.utime)
         self.match_events.append(msg)
         if msg.kind == msg.STATE_CHANGE:
             self.state = msg.text
+
+    def timed_out(self, team: int, player: int) -> bool:
+        """Whether the world last said this robot is inactive (timed out), so that a
+        restarted shim may take it over."""
+        msg = self.status.get((team, player))
+        return msg is not None and msg.state == msg.TIMED_OUT
+
+    def say(self, line: str, file=None) -> None:
+        """Prints a line during the match, above the progress bar if there is one."""
+        file = file or sys.stdout
+        if self._bar is not None:
+            self._bar.write(line, file=file)
+        else:
+            print(line, file=file, flush=True)
+
+    def malformed_total(self) -> int:
+        return sum(self.malformed.values())
 
     def real_time_factor(self) -> float:
         return self.sim_s / max(1e-9, time.monotonic() - self._start)

@@ -63,6 +63,7 @@ void write_summary_json(const std::string& path, const sim::Match& match, const 
       << "  \"interrupted\": " << (s.interrupted ? "true" : "false") << ",\n"
       << "  \"comm\": {\"sent\": " << match.comm().sent() << ", \"delivered\": " << match.comm().delivered()
       << ", \"lost\": " << match.comm().lost() << ", \"refused\": " << match.comm().refused() << "},\n"
+      << "  \"score\": [" << match.game().score[0] << ", " << match.game().score[1] << "],\n"
       << "  \"ball\": {\"x_mm\": " << truth.ball.x_mm << ", \"y_mm\": " << truth.ball.y_mm << "},\n"
       << "  \"robots\": [";
   for (size_t i = 0; i < truth.robots.size(); ++i) {
