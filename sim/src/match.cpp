@@ -130,8 +130,10 @@ ActOutcome Match::apply(const RobotAct& act, int64_t instance, bool accept_late)
   auto robot = on_field_.find(act.id);
   if (!member || member->instance != instance || robot == on_field_.end()) return ActOutcome::kUnknown;
   if (act.frame > frame_) return ActOutcome::kFuture;
-  if (act.frame < frame_ && !accept_late) return ActOutcome::kStale;
-  if (act.frame <= member->answered_frame) return ActOutcome::kDuplicate;
+  // A repeat of the answer taken (a shim answers a re-sent sense again) is a duplicate even
+  // when it arrives after the world moved on; a late first answer is stale.
+  if (act.frame == member->answered_frame) return ActOutcome::kDuplicate;
+  if ((act.frame < frame_ && !accept_late) || act.frame < member->answered_frame) return ActOutcome::kStale;
   if (!plausible(act)) return ActOutcome::kImplausible;
 
   const bool rejoined = !member->active;

@@ -91,6 +91,8 @@ TEST(Match, ASecondAnswerToAFrameIsADuplicateAndMovesNothing) {
   const Pose2D end = match.truth().robots[0].truth.body;
   EXPECT_NEAR(std::hypot(end.x_mm - start.x_mm, end.y_mm - start.y_mm), 5.f * static_cast<float>(ticks), 0.05f);
   EXPECT_EQ(match.roster().find({0, 1})->frames_answered, 1);
+  // The same repeat arriving after the world moved on is still a duplicate, not a late answer.
+  EXPECT_EQ(match.apply(forward_act({0, 1}, 0, ticks, 5.f), 9), ActOutcome::kDuplicate);
 }
 
 TEST(Match, FootMotionNoRobotCouldMakeIsRefused) {
