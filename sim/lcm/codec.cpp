@@ -43,7 +43,8 @@ foot_motion_t to_lcm(const FootMotion& f) {
 /// Frame 0..kMaxFrame: frame_start_utime() and ticks_in_frame() of it cannot overflow.
 void check_frame(int64_t frame, const std::string& what) {
   if (frame < 0 || frame > kMaxFrame)
-    throw MalformedMessage(what + ": frame " + std::to_string(frame) + " not in 0.." + std::to_string(kMaxFrame));
+    throw MalformedMessage(what + ": frame " + std::to_string(frame) + " is not a frame of a match (0.." +
+                           std::to_string(kMaxFrame) + ")");
 }
 
 /// Ids that exist for each kind of observation (see ObjectKind in frame.hpp).
@@ -147,8 +148,8 @@ SenseFrame from_lcm(const sense_t& m) {
     throw MalformedMessage(what + ": motion_ticks " + std::to_string(m.motion_ticks) + ", the frame has " +
                            std::to_string(ticks_in_frame(m.frame)));
   if (m.utime != frame_start_utime(m.frame))
-    throw MalformedMessage(what + ": utime " + std::to_string(m.utime) + ", the frame starts at " +
-                           std::to_string(frame_start_utime(m.frame)));
+    throw MalformedMessage(what + ": at " + std::to_string(m.utime) + " us is not a frame of a match (it starts at " +
+                           std::to_string(frame_start_utime(m.frame)) + " us)");
   if (m.game_state < 0 || m.game_state > static_cast<int8_t>(GameState::kFinished))
     throw MalformedMessage(what + ": unknown game_state " + std::to_string(m.game_state));
   if (m.kickoff_team < 0 || m.kickoff_team > 1)

@@ -34,11 +34,13 @@ struct MalformedMessage : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Highest frame index accepted from the bus: ~1160 years at 30 Hz, and far enough below
-/// INT64_MAX that frame_start_utime() and friends cannot overflow on a forged frame.
-constexpr int64_t kMaxFrame = int64_t{1} << 40;
+/// Highest frame index accepted from the bus. A day of play at 30 Hz is far beyond any
+/// match; a frame number past it is forged or corrupt (and frame_start_utime() of a forged
+/// 2^62 would overflow).
+constexpr int64_t kMaxFrame = int64_t{30} * 3600 * 24;
 
-/// Decodes raw bytes into `msg` (reset first, so nothing of an earlier message survives).
+/// Decodes the LCM encoding `data` (exactly `size` bytes: the Bus hands handlers the payload
+/// without its tag) into `msg`, reset first so nothing of an earlier message survives.
 /// Throws MalformedMessage naming the channel for a wrong type fingerprint, truncated data,
 /// bytes left over, or an array count or string length that the bytes cannot hold; the
 /// generated decoders reject those before allocating (lcm_types/harden_decoders.cmake).
