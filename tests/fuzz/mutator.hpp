@@ -15,11 +15,15 @@ namespace touchline::fuzz {
 
 using Bytes = std::vector<uint8_t>;
 
-/// Iterations per fuzz test: TOUCHLINE_FUZZ_ITERATIONS, or `fallback` (sized so the whole
-/// harness takes seconds, under the sanitizers too).
-inline int iterations(int fallback) {
+#ifndef TOUCHLINE_FUZZ_DEFAULT_ITERATIONS
+#define TOUCHLINE_FUZZ_DEFAULT_ITERATIONS 20000
+#endif
+
+/// Random inputs per fuzz test: TOUCHLINE_FUZZ_ITERATIONS, or a default sized so that the
+/// whole harness takes seconds (more in the sanitizer build, see tests/fuzz/CMakeLists.txt).
+inline int iterations() {
   const char* text = std::getenv("TOUCHLINE_FUZZ_ITERATIONS");
-  return text ? std::atoi(text) : fallback;
+  return text ? std::atoi(text) : TOUCHLINE_FUZZ_DEFAULT_ITERATIONS;
 }
 
 /// The run's seed: TOUCHLINE_FUZZ_SEED, or a fixed one (the same inputs every run).

@@ -80,7 +80,7 @@ TEST(FuzzGameController, EveryInputDecodesOrIsAGameControllerError) {
     fuzz::sweep_edge_values(seeds, [&](const Bytes& bytes) { ok = ok && check(bytes, config, outcomes); });
     ASSERT_TRUE(ok);
     fuzz::Mutator mutator(fuzz::seed(), seeds, /*keep: header and version*/ 5);
-    const int n = fuzz::iterations(20000);
+    const int n = fuzz::iterations();
     for (int i = 0; i < n && check(mutator.next(), config, outcomes); ++i) {
     }
     EXPECT_GT(outcomes.decoded, 0);

@@ -232,7 +232,7 @@ TYPED_TEST(FuzzLcm, EveryInputDecodesOrIsMalformed) {
   Fnv1a type_hash;
   type_hash.add(Msg::getTypeName(), std::char_traits<char>::length(Msg::getTypeName()));
   fuzz::Mutator mutator(fuzz::seed() ^ type_hash.value(), seeds, /*keep: the fingerprint*/ 8);
-  const int n = fuzz::iterations(20000);
+  const int n = fuzz::iterations();
   for (int i = 0; i < n && check<Msg>(mutator.next(), outcomes); ++i) {
   }
   // Both outcomes, or the inputs never reached past the fingerprint check (or never failed).
