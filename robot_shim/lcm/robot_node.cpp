@@ -102,10 +102,7 @@ class RobotNode {
     last_heard_us_ = wall_us();
     SenseFrame frame;
     try {
-      frame = from_lcm(msg);
-      if (frame.frame < 0 || frame.frame > kMaxFrame || frame.utime != frame_start_utime(frame.frame))
-        throw MalformedMessage(m.channel + ": frame " + std::to_string(frame.frame) + " at " +
-                               std::to_string(frame.utime) + " us is not a frame of a match");
+      frame = from_lcm(msg); // also refuses a frame past kMaxFrame or at the wrong time
     } catch (const MalformedMessage& e) {
       report_malformed(e.what());
       return;
@@ -156,9 +153,6 @@ class RobotNode {
   robot::Robot& robot_;
   const RobotNodeDef& def_;
   std::ostream& log_;
-  // A day of play at 30 Hz is far beyond any match; a frame number past it is forged or
-  // corrupt (and frame_start_utime() of it would overflow).
-  static constexpr int64_t kMaxFrame = int64_t{30} * 3600 * 24;
 
   Bus bus_;
   std::vector<uint8_t> last_act_; ///< the last answer as sent, for a repeated frame

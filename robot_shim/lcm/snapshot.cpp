@@ -1,10 +1,41 @@
 #include "touchline/lcm/snapshot.hpp"
 
+#include <cmath>
+#include <limits>
+
+#include "touchline/lcm/codec.hpp"
+
 namespace touchline::transport {
 
 namespace {
 
 namespace AC = api::ActionCommand;
+
+/// Throws MalformedMessage for a snapshot field out of range, naming the snapshot.
+class Checker {
+ public:
+  explicit Checker(const blackboard_snapshot_t& m)
+      : what_("blackboard_snapshot_t team " + std::to_string(m.team) + " player " + std::to_string(m.player) +
+              " frame " + std::to_string(m.frame)) {}
+
+  template <typename Int>
+  Int range(Int value, int64_t lowest, int64_t highest, const char* field) const {
+    if (value < lowest || value > highest)
+      throw MalformedMessage(what_ + ": " + field + " " + std::to_string(value) + " not in " +
+                             std::to_string(lowest) + ".." + std::to_string(highest));
+    return value;
+  }
+  float finite(float value, const char* field) const {
+    if (!std::isfinite(value)) throw MalformedMessage(what_ + ": " + field + " is not finite");
+    return value;
+  }
+  const std::string& what() const { return what_; }
+
+ private:
+  std::string what_;
+};
+
+constexpr int64_t kNoLimit = std::numeric_limits<int64_t>::max();
 
 pose2d_t pose(const api::AbsCoord& c) {
   pose2d_t m;
@@ -14,7 +45,9 @@ pose2d_t pose(const api::AbsCoord& c) {
   return m;
 }
 
-api::AbsCoord pose(const pose2d_t& m) { return {m.x_mm, m.y_mm, m.theta_rad}; }
+api::AbsCoord pose(const pose2d_t& m, const Checker& check) {
+  return {check.finite(m.x_mm, "pose x_mm"), check.finite(m.y_mm, "pose y_mm"), check.finite(m.theta_rad, "pose theta_rad")};
+}
 
 body_request_t body(const AC::Body& b) {
   body_request_t m;
@@ -29,16 +62,17 @@ body_request_t body(const AC::Body& b) {
   return m;
 }
 
-AC::Body body(const body_request_t& m) {
+AC::Body body(const body_request_t& m, const Checker& check) {
   AC::Body b;
-  b.actionType = static_cast<AC::ActionType>(m.action_type);
-  b.forward = m.forward_mm_s;
-  b.left = m.left_mm_s;
-  b.turn = m.turn_rad_s;
-  b.power = m.power;
-  b.bend = m.bend_rad;
-  b.speed = m.speed;
-  b.foot = static_cast<AC::Foot>(m.foot);
+  b.actionType = static_cast<AC::ActionType>(
+      check.range(m.action_type, 0, static_cast<int>(AC::ActionType::DEAD), "body action_type"));
+  b.forward = check.finite(m.forward_mm_s, "body forward_mm_s");
+  b.left = check.finite(m.left_mm_s, "body left_mm_s");
+  b.turn = check.finite(m.turn_rad_s, "body turn_rad_s");
+  b.power = check.finite(m.power, "body power");
+  b.bend = check.finite(m.bend_rad, "body bend_rad");
+  b.speed = check.finite(m.speed, "body speed");
+  b.foot = static_cast<AC::Foot>(check.range(m.foot, 0, 1, "body foot"));
   return b;
 }
 
@@ -52,13 +86,13 @@ head_request_t head(const AC::Head& h) {
   return m;
 }
 
-AC::Head head(const head_request_t& m) {
+AC::Head head(const head_request_t& m, const Checker& check) {
   AC::Head h;
-  h.yaw = m.yaw_rad;
-  h.pitch = m.pitch_rad;
+  h.yaw = check.finite(m.yaw_rad, "head yaw_rad");
+  h.pitch = check.finite(m.pitch_rad, "head pitch_rad");
   h.isRelative = m.is_relative;
-  h.yawSpeed = m.yaw_speed;
-  h.pitchSpeed = m.pitch_speed;
+  h.yawSpeed = check.finite(m.yaw_speed, "head yaw_speed");
+  h.pitchSpeed = check.finite(m.pitch_speed, "head pitch_speed");
   return h;
 }
 
@@ -123,42 +157,50 @@ blackboard_snapshot_t to_snapshot(const api::Blackboard& bb, RobotId id, int64_t
 }
 
 api::Blackboard from_snapshot(const blackboard_snapshot_t& m) {
+  const Checker check(m);
+  check_id(m.team, m.player, check.what());
+  check.range(m.frame, 0, kMaxFrame, "frame");
   api::Blackboard bb;
-  bb.utime = m.utime;
+  bb.utime = check.range(m.utime, 0, kNoLimit, "utime");
   bb.behaviour.skill = m.skill;
 
-  bb.motion.odometry = pose(m.odometry);
-  bb.motion.active = body(m.active);
-  bb.motion.headYaw = m.head_yaw_rad;
-  bb.motion.headPitch = m.head_pitch_rad;
+  bb.motion.odometry = pose(m.odometry, check);
+  bb.motion.active = body(m.active, check);
+  bb.motion.headYaw = check.finite(m.head_yaw_rad, "head_yaw_rad");
+  bb.motion.headPitch = check.finite(m.head_pitch_rad, "head_pitch_rad");
   bb.motion.standing = m.standing;
-  bb.motion.ticks = m.motion_ticks;
-  bb.motion.kickPhase = m.kick_phase;
+  bb.motion.ticks = check.range(m.motion_ticks, 0, kNoLimit, "motion_ticks");
+  bb.motion.kickPhase = check.range(m.kick_phase, 0, 3, "kick_phase");
 
   auto& loc = bb.localisation;
-  loc.robotPos = pose(m.robot_pos);
-  loc.ballPos = pose(m.ball_pos);
-  loc.ballPosRR = {m.ball_rr_distance_mm, m.ball_rr_heading_rad};
-  loc.ballLostCount = m.ball_lost_count;
-  loc.teamBallPos = pose(m.team_ball_pos);
+  loc.robotPos = pose(m.robot_pos, check);
+  loc.ballPos = pose(m.ball_pos, check);
+  loc.ballPosRR = {check.finite(m.ball_rr_distance_mm, "ball_rr_distance_mm"),
+                   check.finite(m.ball_rr_heading_rad, "ball_rr_heading_rad")};
+  loc.ballLostCount = check.range(m.ball_lost_count, 0, kNoLimit, "ball_lost_count");
+  loc.teamBallPos = pose(m.team_ball_pos, check);
 
   bb.vision.ballSeen = m.ball_seen;
-  bb.vision.ball = {m.seen_ball_distance_mm, m.seen_ball_heading_rad};
-  bb.vision.frame = m.vision_frame;
+  bb.vision.ball = {check.finite(m.seen_ball_distance_mm, "seen_ball_distance_mm"),
+                    check.finite(m.seen_ball_heading_rad, "seen_ball_heading_rad")};
+  bb.vision.frame = check.range(m.vision_frame, 0, kMaxFrame, "vision_frame");
 
   auto& gc = bb.gameController;
-  gc.state = static_cast<api::GameState>(m.game_state);
-  gc.team = m.gc_team;
-  gc.playerNumber = m.player_number;
+  gc.state = static_cast<api::GameState>(
+      check.range(m.game_state, 0, static_cast<int>(api::GameState::FINISHED), "game_state"));
+  gc.team = check.range(m.gc_team, 0, 1, "gc_team");
+  gc.playerNumber = check.range(m.player_number, 1, kMaxTeamSize, "player_number");
   gc.penalised = m.penalised;
-  gc.score = {{m.score[0], m.score[1]}};
+  gc.score = {{check.range(m.score[0], 0, kNoLimit, "score"), check.range(m.score[1], 0, kNoLimit, "score")}};
   gc.secsRemaining = m.secs_remaining;
 
   for (const team_message_t& message : m.messages)
-    bb.receiver.messages.push_back({message.player, message.sent_utime, message.data});
+    bb.receiver.messages.push_back({check.range(message.player, 1, kMaxTeamSize, "team message player"),
+                                    check.range(message.sent_utime, 0, kNoLimit, "team message sent_utime"),
+                                    message.data});
 
-  bb.behaviour.request.head = head(m.request_head);
-  bb.behaviour.request.body = body(m.request_body);
+  bb.behaviour.request.head = head(m.request_head, check);
+  bb.behaviour.request.body = body(m.request_body, check);
   bb.behaviour.request.leds.chest = m.request_leds;
   return bb;
 }

@@ -1,5 +1,6 @@
 #include "touchline/lcm/codec.hpp"
 
+#include <array>
 #include <chrono>
 #include <cmath>
 
@@ -37,6 +38,39 @@ foot_motion_t to_lcm(const FootMotion& f) {
   m.dy_mm = f.dy_mm;
   m.dtheta_rad = f.dtheta_rad;
   return m;
+}
+
+/// Frame 0..kMaxFrame: frame_start_utime() and ticks_in_frame() of it cannot overflow.
+void check_frame(int64_t frame, const std::string& what) {
+  if (frame < 0 || frame > kMaxFrame)
+    throw MalformedMessage(what + ": frame " + std::to_string(frame) + " is not a frame of a match (0.." +
+                           std::to_string(kMaxFrame) + ")");
+}
+
+/// Ids that exist for each kind of observation (see ObjectKind in frame.hpp).
+void check_observation(const observation_t& seen, const std::string& what) {
+  int lowest = 0, highest = 0;
+  switch (seen.kind) {
+    case static_cast<int8_t>(ObjectKind::kBall): break;
+    case static_cast<int8_t>(ObjectKind::kGoalPost):
+    case static_cast<int8_t>(ObjectKind::kFieldCorner): highest = 3; break;
+    case static_cast<int8_t>(ObjectKind::kCentreLineEnd):
+    case static_cast<int8_t>(ObjectKind::kPenaltyMark): highest = 1; break;
+    case static_cast<int8_t>(ObjectKind::kTeammate):
+    case static_cast<int8_t>(ObjectKind::kOpponent): lowest = 1; highest = kMaxTeamSize; break;
+    default: throw MalformedMessage(what + ": unknown observation kind " + std::to_string(seen.kind));
+  }
+  if (seen.id < lowest || seen.id > highest)
+    throw MalformedMessage(what + ": observation of kind " + std::to_string(seen.kind) + " with id " +
+                           std::to_string(seen.id) + " (not in " + std::to_string(lowest) + ".." +
+                           std::to_string(highest) + ")");
+  check_finite(seen.distance_mm, "observation distance_mm", what);
+  check_finite(seen.heading_rad, "observation heading_rad", what);
+  check_finite(seen.image_x, "observation image_x", what);
+}
+
+void check_fraction(float value, const char* field, const std::string& what) {
+  if (!(value >= 0.f && value <= 1.f)) throw MalformedMessage(what + ": " + field + " is not in 0..1");
 }
 
 FootMotion from_lcm(const foot_motion_t& m, const std::string& what) {
@@ -109,11 +143,19 @@ sense_t to_lcm(const SenseFrame& frame) {
 
 SenseFrame from_lcm(const sense_t& m) {
   const std::string what = "sense_t frame " + std::to_string(m.frame);
-  if (m.motion_ticks < 1 || m.motion_ticks > kMaxTicksPerFrame)
-    throw MalformedMessage(what + ": motion_ticks " + std::to_string(m.motion_ticks) + " not in 1.." +
-                           std::to_string(kMaxTicksPerFrame));
+  check_frame(m.frame, what);
+  if (m.motion_ticks != ticks_in_frame(m.frame))
+    throw MalformedMessage(what + ": motion_ticks " + std::to_string(m.motion_ticks) + ", the frame has " +
+                           std::to_string(ticks_in_frame(m.frame)));
+  if (m.utime != frame_start_utime(m.frame))
+    throw MalformedMessage(what + ": at " + std::to_string(m.utime) + " us is not a frame of a match (it starts at " +
+                           std::to_string(frame_start_utime(m.frame)) + " us)");
   if (m.game_state < 0 || m.game_state > static_cast<int8_t>(GameState::kFinished))
     throw MalformedMessage(what + ": unknown game_state " + std::to_string(m.game_state));
+  if (m.kickoff_team < 0 || m.kickoff_team > 1)
+    throw MalformedMessage(what + ": kickoff_team " + std::to_string(m.kickoff_team) + " is not 0 or 1");
+  if (m.score[0] < 0 || m.score[1] < 0)
+    throw MalformedMessage(what + ": negative score " + std::to_string(m.score[0]) + ":" + std::to_string(m.score[1]));
   SenseFrame frame;
   frame.utime = m.utime;
   frame.frame = m.frame;
@@ -121,12 +163,16 @@ SenseFrame from_lcm(const sense_t& m) {
   frame.game.state = static_cast<GameState>(m.game_state);
   frame.game.secs_remaining = m.secs_remaining;
   frame.game.first_half = m.first_half;
-  if (m.kickoff_team < 0 || m.kickoff_team > 1)
-    throw MalformedMessage(what + ": kickoff_team " + std::to_string(m.kickoff_team) + " is not 0 or 1");
   frame.game.kickoff_team = m.kickoff_team;
   frame.game.score = {{m.score[0], m.score[1]}};
+  std::array<std::array<bool, kMaxTeamSize + 1>, 2> listed{};
   for (const robot_sense_t& s : m.robots) {
     check_id(s.team, s.player, what);
+    bool& seen_before = listed[static_cast<size_t>(s.team)][static_cast<size_t>(s.player)];
+    if (seen_before)
+      throw MalformedMessage(what + ": team " + std::to_string(s.team) + " player " + std::to_string(s.player) +
+                             " listed twice");
+    seen_before = true;
     RobotSense r;
     r.id = {s.team, s.player};
     r.active = s.active;
@@ -136,15 +182,11 @@ SenseFrame from_lcm(const sense_t& m) {
     r.ball_x_mm = s.ball_x_mm;
     r.ball_y_mm = s.ball_y_mm;
     for (const observation_t& seen : s.seen) {
-      if (seen.kind < 0 || seen.kind > static_cast<int8_t>(ObjectKind::kOpponent))
-        throw MalformedMessage(what + ": unknown observation kind " + std::to_string(seen.kind));
-      check_finite(seen.distance_mm, "observation distance_mm", what);
-      check_finite(seen.heading_rad, "observation heading_rad", what);
-      check_finite(seen.image_x, "observation image_x", what);
+      check_observation(seen, what);
       r.seen.push_back({static_cast<ObjectKind>(seen.kind), seen.id, seen.distance_mm, seen.heading_rad, seen.image_x});
     }
-    check_finite(s.sonar_left, "sonar_left", what);
-    check_finite(s.sonar_right, "sonar_right", what);
+    check_fraction(s.sonar_left, "sonar_left", what);
+    check_fraction(s.sonar_right, "sonar_right", what);
     r.sonar_left = s.sonar_left;
     r.sonar_right = s.sonar_right;
     r.penalised = s.penalised;
@@ -153,6 +195,9 @@ SenseFrame from_lcm(const sense_t& m) {
     for (const team_message_t& message : s.messages) {
       if (message.player < 1 || message.player > kMaxTeamSize)
         throw MalformedMessage(what + ": team message from player " + std::to_string(message.player));
+      if (message.sent_utime < 0 || message.sent_utime > m.utime)
+        throw MalformedMessage(what + ": team message sent at " + std::to_string(message.sent_utime) +
+                               " us, not in 0.." + std::to_string(m.utime));
       r.messages.push_back({message.player, message.sent_utime, message.data});
     }
     frame.robots.push_back(r);
@@ -187,6 +232,9 @@ act_t to_lcm(const RobotAct& act, int64_t utime, int64_t instance) {
 RobotAct from_lcm(const act_t& m) {
   const std::string what = "act_t frame " + std::to_string(m.frame);
   check_id(m.team, m.player, what);
+  check_frame(m.frame, what);
+  if (m.behaviour_cpu_us < 0)
+    throw MalformedMessage(what + ": behaviour_cpu_us " + std::to_string(m.behaviour_cpu_us) + " is negative");
   if (m.motion_ticks < 0 || m.motion_ticks > kMaxTicksPerFrame)
     throw MalformedMessage(what + ": motion_ticks " + std::to_string(m.motion_ticks) + " not in 0.." +
                            std::to_string(kMaxTicksPerFrame));

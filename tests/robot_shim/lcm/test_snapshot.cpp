@@ -1,5 +1,8 @@
 #include "touchline/lcm/snapshot.hpp"
 
+#include "touchline/lcm/codec.hpp"
+
+#include <cmath>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -87,6 +90,27 @@ TEST(Snapshot, BlackboardSurvivesEncodeAndDecode) {
   EXPECT_EQ(out.receiver.messages[0].playerNumber, 2);
   EXPECT_EQ(out.receiver.messages[0].utime, 1200000);
   EXPECT_EQ(out.receiver.messages[0].data, (std::vector<uint8_t>{1, 2, 3}));
+}
+
+// A snapshot read from a log or the bus is input like any message: out of range is an error,
+// not an enum value no behaviour knows or a NaN in the Blackboard.
+TEST(Snapshot, FieldsOutOfRangeAreMalformed) {
+  const auto rejected = [](const char* why, auto change) {
+    blackboard_snapshot_t msg = transport::to_snapshot(sample(), {1, 3}, 37);
+    change(msg);
+    EXPECT_THROW(transport::from_snapshot(msg), transport::MalformedMessage) << why;
+  };
+  rejected("team 2", [](blackboard_snapshot_t& m) { m.team = 2; });
+  rejected("negative frame", [](blackboard_snapshot_t& m) { m.frame = -1; });
+  rejected("unknown action type", [](blackboard_snapshot_t& m) { m.request_body.action_type = 8; });
+  rejected("a third foot", [](blackboard_snapshot_t& m) { m.active.foot = 2; });
+  rejected("unknown game state", [](blackboard_snapshot_t& m) { m.game_state = 5; });
+  rejected("player number 0", [](blackboard_snapshot_t& m) { m.player_number = 0; });
+  rejected("kick phase 4", [](blackboard_snapshot_t& m) { m.kick_phase = 4; });
+  rejected("NaN odometry", [](blackboard_snapshot_t& m) { m.odometry.x_mm = std::nanf(""); });
+  rejected("infinite head request", [](blackboard_snapshot_t& m) { m.request_head.yaw_rad = INFINITY; });
+  rejected("a message from player 8", [](blackboard_snapshot_t& m) { m.messages[0].player = 8; });
+  rejected("negative ball lost count", [](blackboard_snapshot_t& m) { m.ball_lost_count = -1; });
 }
 
 TEST(Snapshot, ChannelNamesTheRobot) {

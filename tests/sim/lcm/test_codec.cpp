@@ -1,9 +1,12 @@
 #include "touchline/lcm/codec.hpp"
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <gtest/gtest.h>
+
+#include "touchline/join_reply_t.hpp"
 
 using namespace touchline;
 using transport::MalformedMessage;
@@ -33,6 +36,48 @@ RobotAct sample_act() {
   act.odometry = {10, 20, 0.5f};
   act.behaviour_cpu_us = 1234;
   return act;
+}
+
+SenseFrame sample_sense() {
+  SenseFrame frame;
+  frame.frame = 5;
+  frame.utime = frame_start_utime(5);
+  frame.motion_ticks = ticks_in_frame(5);
+  RobotSense robot;
+  robot.id = {0, 2};
+  robot.seen.push_back({ObjectKind::kGoalPost, 3, 1500, 0.2f, 0.4f});
+  robot.seen.push_back({ObjectKind::kTeammate, 1, 800, -0.5f, 0.9f});
+  robot.messages.push_back({1, frame_start_utime(4), {1, 2, 3}});
+  frame.robots.push_back(robot);
+  return frame;
+}
+
+/// Decodes `bytes` as a Msg; the MalformedMessage's text, or "" if it decoded.
+template <typename Msg>
+std::string decode_error(const std::vector<uint8_t>& bytes) {
+  Msg msg;
+  try {
+    transport::decode(bytes.data(), static_cast<int>(bytes.size()), "CH", msg);
+    return "";
+  } catch (const MalformedMessage& e) {
+    return e.what();
+  }
+}
+
+/// The same, through from_lcm too.
+template <typename Msg>
+std::string validation_error(const Msg& msg) {
+  try {
+    transport::from_lcm(msg);
+    return "";
+  } catch (const MalformedMessage& e) {
+    return e.what();
+  }
+}
+
+void put_be(std::vector<uint8_t>& bytes, size_t at, int64_t value, int width) {
+  for (int i = 0; i < width; ++i)
+    bytes[at + static_cast<size_t>(i)] = static_cast<uint8_t>(static_cast<uint64_t>(value) >> (8 * (width - 1 - i)));
 }
 
 } // namespace
@@ -110,6 +155,98 @@ TEST(Codec, OutOfRangeFieldsAreRejected) {
   sense_t sense = transport::to_lcm(frame);
   sense.motion_ticks = 7;
   EXPECT_THROW(transport::from_lcm(sense), MalformedMessage);
+}
+
+// Issue #13 item 1: the generated decoder resized its vectors to the count it read, so -1
+// became (size_t)-1 and std::length_error escaped through the LCM callback.
+TEST(Codec, NegativeArrayCountsAreMalformedNotACrash) {
+  act_t act = transport::to_lcm(sample_act(), 0, 1);
+  act.motion_ticks = -1;
+  act.left.clear();
+  act.right.clear();
+  EXPECT_NE(decode_error<act_t>(encode(act)), "");
+
+  act = transport::to_lcm(sample_act(), 0, 1);
+  auto bytes = encode(act);           // no team message: its int16 size ends the message
+  put_be(bytes, bytes.size() - 2, -1, 2);
+  EXPECT_NE(decode_error<act_t>(bytes), "");
+
+  sense_t sense = transport::to_lcm(sample_sense());
+  sense.robots.clear();
+  sense.num_robots = -1;
+  EXPECT_NE(decode_error<sense_t>(encode(sense)), "");
+
+  sense = transport::to_lcm(sample_sense());
+  sense.robots[0].seen.clear();
+  sense.robots[0].num_seen = -1;
+  EXPECT_NE(decode_error<sense_t>(encode(sense)), "");
+
+  sense = transport::to_lcm(sample_sense());
+  sense.robots[0].messages[0].data.clear();
+  sense.robots[0].messages[0].size = -1;
+  EXPECT_NE(decode_error<sense_t>(encode(sense)), "");
+}
+
+TEST(Codec, StringLengthsBelowOneAreMalformed) {
+  join_reply_t reply{};
+  reply.reason = "taken";
+  const auto good = encode(reply);
+  ASSERT_EQ(decode_error<join_reply_t>(good), "");
+  const size_t length_at = 8 + 8 + 1 + 1 + 8 + 1; // fingerprint, utime, team, player, instance, accepted
+  for (const int32_t length : {0, -1, std::numeric_limits<int32_t>::min()}) {
+    auto bytes = good;
+    put_be(bytes, length_at, length, 4);
+    EXPECT_NE(decode_error<join_reply_t>(bytes), "") << "string length " << length;
+  }
+}
+
+TEST(Codec, BytesAfterTheMessageAreMalformed) {
+  auto bytes = encode(transport::to_lcm(sample_act(), 0, 1));
+  bytes.push_back(0);
+  EXPECT_NE(decode_error<act_t>(bytes).find("1 bytes after the act_t"), std::string::npos)
+      << decode_error<act_t>(bytes);
+}
+
+TEST(Codec, DecodingIntoAUsedMessageLeavesNothingBehind) {
+  RobotAct with_message = sample_act();
+  with_message.team_message = {7, 7, 7};
+  act_t msg;
+  const auto first = encode(transport::to_lcm(with_message, 0, 1));
+  transport::decode(first.data(), static_cast<int>(first.size()), "TL_ACT_1_3", msg);
+  const auto second = encode(transport::to_lcm(sample_act(), 0, 1));
+  transport::decode(second.data(), static_cast<int>(second.size()), "TL_ACT_1_3", msg);
+  EXPECT_TRUE(msg.team_message.empty());
+}
+
+TEST(Codec, SenseFieldsOutOfRangeAreRejected) {
+  ASSERT_EQ(validation_error(transport::to_lcm(sample_sense())), "");
+  const auto rejected = [](const char* why, auto change) {
+    sense_t msg = transport::to_lcm(sample_sense());
+    change(msg);
+    EXPECT_NE(validation_error(msg), "") << why;
+  };
+  rejected("negative frame", [](sense_t& m) { m.frame = -1; });
+  rejected("a frame whose time overflows", [](sense_t& m) { m.frame = int64_t{1} << 62; });
+  rejected("ticks that do not match the frame", [](sense_t& m) { m.motion_ticks = 3; });
+  rejected("a time that does not match the frame", [](sense_t& m) { m.utime += 1; });
+  rejected("a negative score", [](sense_t& m) { m.score[1] = -1; });
+  rejected("the same robot twice", [](sense_t& m) { m.robots.push_back(m.robots[0]); m.num_robots = 2; });
+  rejected("a sonar reading beyond its range", [](sense_t& m) { m.robots[0].sonar_left = 1.5f; });
+  rejected("a goal post that does not exist", [](sense_t& m) { m.robots[0].seen[0].id = 4; });
+  rejected("a teammate numbered 0", [](sense_t& m) { m.robots[0].seen[1].id = 0; });
+  rejected("a team message from the future", [](sense_t& m) { m.robots[0].messages[0].sent_utime = m.utime + 1; });
+}
+
+TEST(Codec, ActFieldsOutOfRangeAreRejected) {
+  ASSERT_EQ(validation_error(transport::to_lcm(sample_act(), 0, 1)), "");
+  const auto rejected = [](const char* why, auto change) {
+    act_t msg = transport::to_lcm(sample_act(), 0, 1);
+    change(msg);
+    EXPECT_NE(validation_error(msg), "") << why;
+  };
+  rejected("negative frame", [](act_t& m) { m.frame = -1; });
+  rejected("a frame whose time overflows", [](act_t& m) { m.frame = int64_t{1} << 62; });
+  rejected("negative CPU time", [](act_t& m) { m.behaviour_cpu_us = -1; });
 }
 
 TEST(Codec, ActChannelNamesTheRobot) {

@@ -14,7 +14,9 @@ std::string snapshot_channel(RobotId id);
 
 blackboard_snapshot_t to_snapshot(const api::Blackboard& blackboard, RobotId id, int64_t frame);
 
-/// The Blackboard the snapshot was taken from.
+/// The Blackboard the snapshot was taken from. Throws MalformedMessage (touchline/lcm/codec.hpp)
+/// for a field out of range: ids, enums (action type, foot, kick phase, game state), frame
+/// 0..kMaxFrame, negative counts, times or scores, numbers that are not finite.
 api::Blackboard from_snapshot(const blackboard_snapshot_t& snapshot);
 
 } // namespace touchline::transport

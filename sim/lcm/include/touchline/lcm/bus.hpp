@@ -9,7 +9,14 @@
 // not verify is counted and dropped before any handler sees it.
 //
 // Built on LCM's C API: the programs run clean under AddressSanitizer with it, which they
-// did not with Debian's LCM 1.3.1 C++ wrapper (issue #13, item 13).
+// did not with Debian's LCM 1.3.1 C++ wrapper (issue #13, item 13). The wrapper was not at
+// fault: GCC 12 miscompiles its dispatch, (subs->handler->*subs->handlerMethod)(...) in
+// lcm-cpp-impl.hpp, under -fsanitize=vptr (part of undefined). The vptr check of `subs`
+// for the call's second member access reads `subs` from a register loaded only on the
+// virtual-function path, so a handler that is not virtual gets a stale `this` (reported as
+// heap-use-after-free, stack-buffer-underflow or SEGV, by what the register last held).
+// Any `(p->object->*p->method)(...)` with a polymorphic `*p` does it, no LCM involved;
+// without vptr the same build is clean. So no member-function handlers via lcm::LCM here.
 //
 // Handlers never let an exception out: one that throws is counted and reported, and the
 // bus goes on (an exception must never unwind through liblcm's C frames).
