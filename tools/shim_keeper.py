@@ -71,8 +71,8 @@ class ShimKeeper:
                     self._restart(shim)
                 continue
             self._note_taken_back(shim)
-            if shim.child.poll() is None:
-                continue
+            if shim.child.poll() in (None, 0):  # 0: it heard the world's FINISHED, which the world
+                continue                        # repeats for a while before it exits itself
             if not kicked_off:
                 return f"{shim.name} {shim.child.why()} (logs in {self.children.logdir})"
             self._died(shim)
