@@ -42,23 +42,30 @@ def play(build: Path, team0: str, team1: str, seed: int, extra: list, workdir: P
     return json.loads(summary.read_text()), log
 
 
-def analyse_log(log: Path, half_length: float, half_width: float, border: float) -> dict:
-    """Possession frames per team and stuck seconds per team, from the truth stream."""
+def analyse_log(log: Path) -> dict:
+    """Possession frames per team and stuck seconds per team, from the truth stream, on the
+    field of the match's own TL_MATCH (the first message of its log)."""
     import lcm
-    from touchline import game_state_t, world_truth_t
+    from touchline import game_state_t, match_config_t, world_truth_t
 
     playing = False
     possession = Counter()
     history = defaultdict(list)  # (team, player) -> [(x, y, theta, counts)]
     stuck_frames = Counter()
-    edge_x, edge_y = half_length + border, half_width + border
+    edge_x = edge_y = None  # the carpet's edges, from TL_MATCH
     truth_frames = 0
     for event in lcm.EventLog(str(log), "r"):
+        if event.channel == "TL_MATCH" and edge_x is None:
+            match = match_config_t.decode(event.data)
+            edge_x, edge_y = (size / 2 + match.border_mm for size in (match.field_length_mm, match.field_width_mm))
+            continue
         if event.channel == "TL_GAME":
             playing = game_state_t.decode(event.data).state == game_state_t.PLAYING
             continue
         if event.channel != "TL_TRUTH":
             continue
+        if edge_x is None:
+            raise SystemExit(f"evaluate_teams: {log} has no TL_MATCH before its first TL_TRUTH")
         truth_frames += 1
         if truth_frames % SAMPLE_EVERY:
             continue
@@ -101,7 +108,6 @@ def main() -> int:
     args = parser.parse_args()
     sys.path.insert(0, str(args.build_dir / "lcm_types" / "gen" / "python"))
     extra = [a for item in args.set for a in ("--set", item)]
-    field = (3000.0, 2000.0, 700.0)  # SPL 2011 (config/spl2011.ini)
     results = {}
     for name in args.experiments:
         team0, team1 = EXPERIMENTS[name]
@@ -111,7 +117,7 @@ def main() -> int:
                 summary, log = play(args.build_dir, team0, team1, seed, extra, Path(tmp))
                 rows.append({"seed": seed, "score": summary["score"],
                              "penalties": Counter(f"{p['team']}:{p['kind']}" for p in summary["penalties"]),
-                             "falls": len(summary["falls"]), "sim_s": summary["sim_s"], **analyse_log(log, *field)})
+                             "falls": len(summary["falls"]), "sim_s": summary["sim_s"], **analyse_log(log)})
             r = rows[-1]
             print(f"{name} seed {seed:2d}: {r['score'][0]}:{r['score'][1]}, stuck {r['stuck_s']} s", flush=True)
         results[name] = {"team0": team0, "team1": team1, "matches": rows}

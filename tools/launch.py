@@ -29,6 +29,7 @@ from shim_keeper import ShimKeeper
 ROOT = Path(__file__).resolve().parents[1]
 DEFAULT_BUILD = ROOT / "build"
 SHIMS_EXIT_S = 10  # wall seconds the shims may take to exit once the world has ended the match
+MATCH_CONFIG_WAIT_S = 10  # wall seconds sim_world may take to publish the match (TL_MATCH) once started
 
 # Exit codes besides 0 (a clean match) and 2 (bad options): the match stopped (a process or
 # the watcher failed), a robot_shim died (the match played to its end all the same), or a
@@ -109,26 +110,17 @@ def team_behaviour(spec: str) -> list | None:
     return ["--behaviour", skill, *params]
 
 
-def kickoff_targets(team_size: int, half_length: float, half_width: float) -> list:
+def kickoff_targets(match) -> list:
     """Each team's formation in its own frame (the robot API's: +x towards the opponent
-    goal), so both teams get the same targets."""
+    goal), so both teams get the same targets, on the field the match (its match_config_t)
+    is played on."""
+    half_length, half_width = match.field_length_mm / 2, match.field_width_mm / 2
     targets = []
     for team in (0, 1):
-        for player in range(1, team_size + 1):
+        for player in range(1, match.team_size + 1):
             fx, fy, theta = FORMATION[player - 1]
             targets.append((team, player, fx * half_length, fy * half_width, theta))
     return targets
-
-
-def read_config(config: Path) -> tuple:
-    """(half length, half width, match duration cap) from a world config."""
-    import configparser
-    ini = configparser.ConfigParser(inline_comment_prefixes=("#", ";"))
-    ini.read(config)
-    field = ini["field"] if "field" in ini else {}
-    match = ini["match"] if "match" in ini else {}
-    return (float(field.get("length_mm", 6000)) / 2, float(field.get("width_mm", 4000)) / 2,
-            float(match.get("duration_s", 1800)))
 
 
 class StopSignal:
@@ -168,9 +160,7 @@ class Launcher:
             stamp = datetime.datetime.now().strftime("%Y-%m-%d_%H%M%S")
             log = a.log_dir / f"{stamp}_seed{a.seed}.lcmlog"
             log.parent.mkdir(parents=True, exist_ok=True)
-        self.half_length, self.half_width, duration_cap = read_config(a.config)
-        watch = MatchWatch(a.lcm_url, a.duration or duration_cap, show_bar=sys.stdout.isatty() and not a.no_progress,
-                           team_size=a.team_size)
+        watch = MatchWatch(a.lcm_url, show_bar=sys.stdout.isatty() and not a.no_progress, team_size=a.team_size)
         keeper = ShimKeeper(self.children, watch, restart=a.restart_dead)
         try:
             rc = self.play(bin_world, bin_shim, watch, keeper, log)
@@ -193,7 +183,6 @@ class Launcher:
     def play(self, bin_world: Path, bin_shim: Path, watch: MatchWatch, keeper: ShimKeeper, log: Path | None) -> int:
         a = self.args
         summary_path = self.logdir / "summary.json"
-        targets = kickoff_targets(a.team_size, self.half_length, self.half_width)
         world = self.children.start("sim_world", [
             bin_world, "--config", a.config, "--set", f"match.team_size={a.team_size}",
             *(["--duration", a.duration] if a.duration else []),
@@ -202,6 +191,12 @@ class Launcher:
             *(["--robot-timeout-ms", a.robot_timeout_ms] if a.robot_timeout_ms else []),
             "--lcm-url", a.lcm_url, "--summary", summary_path, "--quiet",
             *(["--log", log] if log else [])])
+        # The robots are placed on the field the world plays on (its config after every
+        # --set), which only the world knows: it says so on TL_MATCH as it starts.
+        if (rc := self.wait_for_match(world, watch)) is not None:
+            return rc
+        match = watch.match
+        targets = kickoff_targets(match)
         for team, player, x, y, theta in targets:
             spec = getattr(a, f"team{team}")
             if spec:
@@ -218,11 +213,12 @@ class Launcher:
         what = a.skill if a.behaviour == "py" else "goto kick-off spots"
         if a.team0 or a.team1:
             what = f"{a.team0 or what} v {a.team1 or what}"
-        print(f"launch: {2 * a.team_size} robots ({what}), {length}, {a.mode} mode, seed {a.seed}", flush=True)
+        print(f"launch: {2 * match.team_size} robots ({what}), {length}, {a.mode} mode, seed {a.seed}, "
+              f"field {match.field_length_mm:.0f} x {match.field_width_mm:.0f} mm", flush=True)
         announced = False
         while world.poll() is None:
             if watch.kicked_off and not announced:  # from here on a dying shim no longer stops the match
-                watch.say(f"launch: kick-off, all {2 * a.team_size} robots joined")
+                watch.say(f"launch: kick-off, all {2 * match.team_size} robots joined")
                 announced = True
             if (rc := self.interrupted()) is not None:
                 return rc
@@ -264,6 +260,24 @@ class Launcher:
         if a.json:
             a.json.write_text(json.dumps(summary, indent=2) + "\n")
         return EXIT_SHIM_DIED if keeper.deaths else 0
+
+    def wait_for_match(self, world, watch: MatchWatch) -> int | None:
+        """Waits for the world's TL_MATCH; an exit code if the match cannot go on without it."""
+        deadline = time.monotonic() + MATCH_CONFIG_WAIT_S
+        while watch.match is None:
+            if (rc := self.interrupted()) is not None:
+                return rc
+            if world.poll() is not None:
+                print(f"launch: stopping the match: sim_world {world.why()} (logs in {self.logdir})", file=sys.stderr)
+                return EXIT_FAILED
+            if watch.error or time.monotonic() > deadline:
+                why = watch.error or (f"sim_world published no usable TL_MATCH (the match's set-up) within "
+                                      f"{MATCH_CONFIG_WAIT_S} s" + (f" (last refused: {watch.last_malformed})"
+                                                                     if watch.malformed["TL_MATCH"] else ""))
+                print(f"launch: stopping the match: {why} (logs in {self.logdir})", file=sys.stderr)
+                return EXIT_FAILED
+            time.sleep(0.02)  # polling the watcher's thread, not hiding a race
+        return None
 
     def report(self, summary: dict, targets: list) -> None:
         a = self.args

@@ -1,5 +1,6 @@
-"""Follows a running match over LCM for the launcher: simulated time, real-time factor,
-score and robot status, shown as a progress bar (tqdm) and kept for the summary.
+"""Follows a running match over LCM for the launcher: the match's own set-up and geometry
+(TL_MATCH, which the launcher places the robots by), simulated time, real-time factor, score
+and robot status, shown as a progress bar (tqdm) and kept for the summary.
 
 Anyone on the bus can publish on the channels watched here, so every message is decoded
 with the generated types and checked before it is used; one that fails is counted per
@@ -8,13 +9,14 @@ channel and skipped. Anything else that goes wrong in the watching thread is kep
 """
 from __future__ import annotations
 
+import math
 import select
 import sys
 import threading
 import time
 import traceback
 
-CHANNELS = ("TL_GAME", "TL_STATUS", "TL_EVENT")
+CHANNELS = ("TL_MATCH", "TL_GAME", "TL_STATUS", "TL_EVENT")
 MAX_TEAM_SIZE = 7  # players are numbered 1..7 (touchline/frame.hpp kMaxTeamSize)
 
 
@@ -28,13 +30,15 @@ def require(ok: bool, what: str) -> None:
 
 
 class MatchWatch:
-    def __init__(self, lcm_url: str, duration_s: float, show_bar: bool, team_size: int = MAX_TEAM_SIZE):
+    def __init__(self, lcm_url: str, show_bar: bool, team_size: int = MAX_TEAM_SIZE):
         import lcm
-        from touchline import game_state_t, match_event_t, robot_status_t
+        from touchline import game_state_t, match_config_t, match_event_t, robot_status_t
 
         self._game_t, self._status_t, self._event_t = game_state_t, robot_status_t, match_event_t
+        self._match_t = match_config_t
         self._team_size = team_size
         self.bus = lcm.LCM(lcm_url)
+        self.bus.subscribe("TL_MATCH", self._on_match)
         self.bus.subscribe("TL_GAME", self._on_game)
         self.bus.subscribe("TL_STATUS", self._on_status)
         self.bus.subscribe("TL_EVENT", self._on_event)
@@ -48,12 +52,11 @@ class MatchWatch:
         self.last_malformed = ""  # why the latest one was skipped
         self.error: str | None = None  # why the watching thread stopped, if it failed
         self.state = "INITIAL"
+        self.match = None  # the first valid match_config_t: the match as the world plays it
         self._start = time.monotonic()
         self._stop = threading.Event()
-        self._bar = None
-        if show_bar:
-            from tqdm import tqdm
-            self._bar = tqdm(total=round(duration_s), unit="sim s", dynamic_ncols=True, leave=True)
+        self._show_bar = show_bar
+        self._bar = None  # made when TL_MATCH says how long the match may last
         self._thread = threading.Thread(target=self._run, name="match watch", daemon=True)
         self._thread.start()
 
@@ -100,8 +103,25 @@ class MatchWatch:
         require(msg.team in (-1, 0, 1), f"team {msg.team}")
         require(0 <= msg.player <= self._team_size, f"player {msg.player}")
 
+    def _check_match(self, msg) -> None:
+        require(msg.types_version == msg.TYPES_VERSION,
+                f"LCM types version {msg.types_version}, the launcher's is {msg.TYPES_VERSION}")
+        require(1 <= msg.team_size <= MAX_TEAM_SIZE, f"team size {msg.team_size}")
+        sizes = (msg.field_length_mm, msg.field_width_mm, msg.duration_s)
+        require(all(math.isfinite(v) and v > 0 for v in sizes), "a field size or duration that is not positive")
+
     def _advance(self, utime: int) -> None:
         self.sim_s = max(self.sim_s, utime / 1e6)
+
+    def _on_match(self, channel: str, data: bytes) -> None:
+        msg = self._decode(channel, data, self._match_t, self._check_match)
+        if msg is None or self.match is not None:  # the world repeats it unchanged
+            return
+        self._team_size = msg.team_size
+        if self._show_bar:
+            from tqdm import tqdm
+            self._bar = tqdm(total=round(msg.duration_s), unit="sim s", dynamic_ncols=True, leave=True)
+        self.match = msg  # last: the launcher reads it from another thread
 
     def _on_game(self, channel: str, data: bytes) -> None:
         msg = self._decode(channel, data, self._game_t, self._check_game)

@@ -62,10 +62,7 @@ RobotAct Robot::step(const SenseFrame& frame, const RobotSense& sense) {
   }
   act.head_yaw_rad = motion_.head_yaw();
   act.head_pitch_rad = motion_.head_pitch();
-  act.action_type = static_cast<int>(blackboard_.motion.active.actionType);
   act.leds = blackboard_.behaviour.request.leds.chest;
-  const Pose2D odometry = motion_.walk().odometry();
-  act.odometry = odometry;
   act.behaviour_cpu_us = stats_.ticked_last_step ? stats_.last_cpu_us : 0;
   const api::AbsCoord& believed = blackboard_.localisation.robotPos;
   act.localised = to_world_frame({believed.x, believed.y, believed.theta}, id_.team);

@@ -219,9 +219,7 @@ act_t to_lcm(const RobotAct& act, int64_t utime, int64_t instance) {
   }
   m.head_yaw_rad = act.head_yaw_rad;
   m.head_pitch_rad = act.head_pitch_rad;
-  m.action_type = static_cast<int8_t>(act.action_type);
   m.leds = act.leds;
-  m.odometry = to_lcm(act.odometry);
   m.behaviour_cpu_us = static_cast<int32_t>(act.behaviour_cpu_us);
   m.localised = to_lcm(act.localised);
   m.team_message_size = static_cast<int16_t>(act.team_message.size());
@@ -250,9 +248,7 @@ RobotAct from_lcm(const act_t& m) {
   check_finite(m.head_pitch_rad, "head_pitch_rad", what);
   act.head_yaw_rad = m.head_yaw_rad;
   act.head_pitch_rad = m.head_pitch_rad;
-  act.action_type = m.action_type;
   act.leds = m.leds;
-  act.odometry = from_lcm(m.odometry, "odometry", what);
   act.behaviour_cpu_us = m.behaviour_cpu_us;
   act.localised = from_lcm(m.localised, "localised", what);
   act.team_message = m.team_message;

@@ -16,6 +16,7 @@
 #include "touchline/join_t.hpp"
 #include "touchline/match_event_t.hpp"
 #include "touchline/lcm/bus.hpp"
+#include "touchline/lcm/match_config.hpp"
 #include "touchline/lcm/match_recorder.hpp"
 #include "touchline/robot_status_t.hpp"
 #include "touchline/sim/lockstep.hpp"
@@ -60,6 +61,7 @@ world_truth_t to_msg(const sim::TruthFrame& truth) {
     t.right_foot = to_lcm(r.truth.right_foot);
     t.head_yaw_rad = r.head_yaw_rad;
     t.head_pitch_rad = r.head_pitch_rad;
+    t.chest_led = r.chest_led;
     m.robots.push_back(t);
   }
   return m;
@@ -79,6 +81,7 @@ class WorldNode {
   }
 
   RunSummary run() {
+    publish_match_config(); // the log's first message: a reader learns the geometry before any frame
     wait_for_joins();
     if (def_.gamecontroller) {
       gamecontroller_.emplace(*def_.gamecontroller);
@@ -89,6 +92,7 @@ class WorldNode {
            << gamecontroller_->port() << "\n" << std::flush;
     }
     match_.start();
+    publish_match_config();
     publish_game_state(false); // the tools and robots learn the state at once
     log_ << "sim_world: kick-off with " << match_.active_robots().size() << " robots\n" << std::flush;
     const int64_t start_us = wall_us();
@@ -115,7 +119,12 @@ class WorldNode {
  private:
   void wait_for_joins() {
     const int64_t deadline = wall_us() + static_cast<int64_t>(def_.join_timeout_s * 1e6);
+    int64_t next_config_us = wall_us() + kConfigPeriodUs;
     while (static_cast<int>(match_.roster().members().size()) < def_.robots) {
+      if (wall_us() >= next_config_us) { // for a tool that started after the world
+        publish_match_config();
+        next_config_us += kConfigPeriodUs;
+      }
       if (g_stop) throw std::runtime_error("interrupted while waiting for robots to join");
       if (wall_us() >= deadline)
         throw std::runtime_error("only " + std::to_string(match_.roster().members().size()) + " of " +
@@ -157,6 +166,7 @@ class WorldNode {
     truth_hash_.add(bytes.data(), bytes.size() - kTagBytes);
     summary_.truth_hash = truth_hash_.value();
     if (match_.frame() % kFramesPerSecond == 0) {
+      publish_match_config();
       publish_game_state(false);
       publish_status_all("");
     }
@@ -338,6 +348,9 @@ class WorldNode {
     publish(kGameChannel, msg);
   }
 
+  /// TL_MATCH: the geometry and set-up this match runs with (the config after every override).
+  void publish_match_config() { publish(kMatchChannel, to_lcm(match_.config(), match_.seed(), match_.utime())); }
+
   void publish_events() {
     const std::vector<sim::MatchEvent> events = match_.take_events();
     for (const sim::MatchEvent& event : events) {
@@ -357,6 +370,7 @@ class WorldNode {
   static constexpr int kFramesPerSecond = 30;
   static constexpr int kFinishedRepeats = 5;
   static constexpr int kFinishedGapMs = 10;
+  static constexpr int64_t kConfigPeriodUs = 1000000; ///< TL_MATCH while the robots join, wall time
   static constexpr int64_t kMaxMalformedReports = 20;
 
   sim::Match& match_;

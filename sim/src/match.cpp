@@ -153,6 +153,7 @@ ActOutcome Match::apply(const RobotAct& act, int64_t instance, bool accept_late)
   while (robot->second.pending.size() > kMaxPendingTicks) robot->second.pending.pop_front();
   robot->second.head_yaw_rad = act.head_yaw_rad;
   robot->second.head_pitch_rad = act.head_pitch_rad;
+  robot->second.chest_led = act.leds;
   return rejoined ? ActOutcome::kRejoined : ActOutcome::kApplied;
 }
 
@@ -279,6 +280,7 @@ TruthFrame Match::truth() const {
     r.fallen = fallen(robot);
     r.head_yaw_rad = robot.head_yaw_rad;
     r.head_pitch_rad = robot.head_pitch_rad;
+    r.chest_led = robot.chest_led;
     truth.robots.push_back(r);
   }
   return truth;

@@ -64,7 +64,7 @@ TEST(Robot, OneFrameRunsTheBehaviourOnceAndTheFramesMotionTicks) {
   EXPECT_EQ(act.motion_ticks, 4); // frame 2 holds ticks 6..9
   EXPECT_EQ(act.leds, 0xff0000);
   EXPECT_EQ(robot.blackboard().motion.ticks, 4);
-  EXPECT_EQ(act.action_type, static_cast<int>(ActionCommand::ActionType::WALK));
+  EXPECT_EQ(robot.blackboard().motion.active.actionType, ActionCommand::ActionType::WALK);
 }
 
 TEST(Robot, WalkingRobotReportsFootMotionAndOdometry) {

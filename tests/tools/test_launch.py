@@ -70,3 +70,16 @@ def test_team_specs_carry_skill_parameters():
     result = launch("--team0", "py:Team,walker")
     assert result.returncode == 2
     assert "--team0 must be py:SKILL or cpp:SKILL, then any ,KEY=VALUE (got 'py:Team,walker')" in result.stderr
+
+
+def test_a_match_on_a_changed_field_is_placed_logged_and_drawn_on_that_field(tmp_path):
+    result = launch("--team-size", 1, "--duration", 1, "--set", "field.length_mm=7000", "--log-dir", tmp_path)
+    assert result.returncode == 0, result.stderr
+    assert "field 7000 x 4000 mm" in result.stdout, "the launcher places the robots on the match's field"
+    [log] = tmp_path.glob("*.lcmlog")
+    first = next(iter(lcm.EventLog(str(log), "r")))
+    assert first.channel == "TL_MATCH", "a log reader learns the geometry before anything else"
+    sys.path.insert(0, str(ROOT / "viewer"))
+    from touchline_viewer.replay_log import ReplayLog
+    match = ReplayLog.load(log).match
+    assert (match["field"]["length_mm"], match["field"]["width_mm"], match["team_size"]) == (7000, 4000, 1)

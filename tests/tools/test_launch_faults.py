@@ -150,7 +150,7 @@ def test_malformed_messages_on_the_watched_channels_are_counted_and_the_score_is
     assert "Goals: team 0 at 0:13" in match.stdout, match.output()
     summary = summary_of(tmp_path)
     assert summary["score"] == [1, 0] and summary["goals"] == [{"sim_s": pytest.approx(13, abs=1), "team": 0}]
-    assert summary["launcher_malformed"] == {"TL_GAME": 2, "TL_STATUS": 1, "TL_EVENT": 1}
+    assert summary["launcher_malformed"] == {"TL_MATCH": 0, "TL_GAME": 2, "TL_STATUS": 1, "TL_EVENT": 1}
     assert any("malformed messages the launcher ignored: TL_GAME 2, TL_STATUS 1, TL_EVENT 1" in line
                for line in match.stdout), match.output()
 

@@ -9,12 +9,12 @@ from conftest import LCM_URL, ROOT
 
 sys.path.insert(0, str(ROOT / "tools"))
 from match_watch import MatchWatch  # noqa: E402
-from touchline import game_state_t, match_event_t, robot_status_t  # noqa: E402
+from touchline import game_state_t, match_config_t, match_event_t, robot_status_t  # noqa: E402
 
 
 @pytest.fixture
 def watch():
-    w = MatchWatch(LCM_URL, duration_s=60, show_bar=False, team_size=2)
+    w = MatchWatch(LCM_URL, show_bar=False, team_size=2)
     yield w
     w.stop()
 
@@ -44,6 +44,27 @@ def status(team, player, state, detail="", utime=2_000_000):
     return msg.encode()
 
 
+def match_config(length_mm=7000.0, version=match_config_t.TYPES_VERSION, team_size=3):
+    msg = match_config_t()
+    msg.types_version, msg.team_size, msg.duration_s = version, team_size, 60.0
+    msg.field_length_mm, msg.field_width_mm = length_mm, 4000.0
+    return msg.encode()
+
+
+def test_the_match_is_taken_from_its_tl_match_and_an_unusable_one_is_refused(watch):
+    bus = lcm.LCM(LCM_URL)
+    bus.publish("TL_MATCH", match_config(version=match_config_t.TYPES_VERSION + 1))  # other types
+    bus.publish("TL_MATCH", match_config(length_mm=float("nan")))
+    bus.publish("TL_MATCH", match_config(team_size=8))
+    bus.publish("TL_MATCH", match_config(length_mm=7000.0))
+    bus.publish("TL_MATCH", match_config(length_mm=9000.0))  # only the first counts: the world repeats it
+    bus.publish("TL_STATUS", status(0, 3, robot_status_t.JOINED))  # player 3: in a team of 3 now
+    wait_until(lambda: (0, 3) in watch.status)
+    assert watch.malformed["TL_MATCH"] == 3 and "types version" not in watch.last_malformed
+    assert watch.match.field_length_mm == 7000.0 and watch.match.team_size == 3
+    assert watch.malformed["TL_STATUS"] == 0
+
+
 def test_malformed_messages_are_counted_per_channel_and_skipped(watch):
     bus = lcm.LCM(LCM_URL)
     bus.publish("TL_EVENT", b"\x01\x02\x03")                        # not an LCM message of the type
@@ -57,7 +78,7 @@ def test_malformed_messages_are_counted_per_channel_and_skipped(watch):
     bus.publish("TL_GAME", game([2, 1]))
     wait_until(lambda: watch.score == (2, 1))
     assert watch.error is None
-    assert watch.malformed == {"TL_GAME": 2, "TL_STATUS": 2, "TL_EVENT": 2}
+    assert watch.malformed == {"TL_MATCH": 0, "TL_GAME": 2, "TL_STATUS": 2, "TL_EVENT": 2}
     assert [(e.kind, e.team) for e in watch.match_events] == [(match_event_t.GOAL, 0)]
     assert watch.timed_out(1, 2) and not watch.timed_out(0, 1)
     assert watch.events == [(2.0, "team 1 player 2 no answer within 300 ms")]

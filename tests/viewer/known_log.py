@@ -27,6 +27,18 @@ PENALISED = {(1, 4)}  # in every frame
 FALLEN_FROM = {(0, 2): 6}  # lying from this frame on
 SENSE_FRAMES = range(FRAMES - 1)  # the last frame has no TL_SENSE: no sonar to draw
 FALL_US = 6 * FRAME_US + 1000  # during frame 6, after frame 5's truth
+LEDS = {(0, 2): 0xFF00FF, (1, 1): 0x00FF00}  # chest LEDs (magenta: a failed behaviour); the rest off
+# The match's TL_MATCH: deliberately not the SPL 2011 sizes, so a page that drew from its own
+# copy of a config would be caught.
+MATCH = {"field_length_mm": 7000.0, "field_width_mm": 4500.0, "border_mm": 600.0, "line_width_mm": 50.0,
+         "goal_width_mm": 1500.0, "goal_depth_mm": 450.0, "goal_post_diameter_mm": 100.0,
+         "goal_box_length_mm": 650.0, "goal_box_width_mm": 2300.0, "penalty_area_length_mm": 0.0,
+         "penalty_area_width_mm": 0.0, "penalty_mark_distance_mm": 1900.0, "centre_circle_diameter_mm": 1300.0,
+         "ball_diameter_mm": 80.0, "foot_length_mm": 170.0, "foot_width_mm": 90.0, "foot_separation_mm": 100.0,
+         "camera_field_of_view_rad": 1.0, "camera_min_pitch_rad": -0.6, "camera_max_pitch_rad": 0.5,
+         "camera_near_range_mm": 1100.0, "camera_range_span_mm": 2500.0,
+         "sonar_range_mm": 900.0, "sonar_half_width_mm": 100.0}
+SEED, TEAM_SIZE = 17, 4
 # match_event_t: (utime, kind, team, player, text); the page shows them as (kind name, text)
 EVENTS = [(0, 0, -1, 0, "PLAYING"), (0, 2, 1, 4, "pushing"), (FALL_US, 4, 0, 2, "fell")]
 
@@ -51,6 +63,12 @@ def sonar_at(team: int, player: int, k: int) -> tuple:
     return {(0, 1): (0.6, 1.0), (1, 2): (0.25, 0.3)}.get((team, player), (1.0, 1.0))
 
 
+def camera_range_mm(pitch: float) -> float:
+    """The camera's reach for a head pitch, as the world computes it (sim/src/camera.cpp)."""
+    lo, hi = MATCH["camera_min_pitch_rad"], MATCH["camera_max_pitch_rad"]
+    return MATCH["camera_near_range_mm"] + MATCH["camera_range_span_mm"] * (hi - min(max(pitch, lo), hi)) / (hi - lo)
+
+
 def utime_of(k: int) -> int:
     return (k + 1) * FRAME_US
 
@@ -73,6 +91,7 @@ def _truth(k: int):
         t.penalised, t.fallen = r["penalised"], r["fallen"]
         t.body, t.left_foot, t.right_foot = _pose(r["body"]), _pose(r["left"]), _pose(r["right"])
         t.head_yaw_rad, t.head_pitch_rad = r["head"]
+        t.chest_led = LEDS.get((t.team, t.player), 0)
         m.robots.append(t)
     m.num_robots = len(m.robots)
     return m
@@ -89,6 +108,16 @@ def _sense(k: int):
         s.sonar_left, s.sonar_right = sonar_at(s.team, s.player, k)
         m.robots.append(s)
     m.num_robots = len(m.robots)
+    return m
+
+
+def match_config(**changes):
+    """The known match's TL_MATCH (match_config_t), with `changes` to its fields."""
+    m = touchline.match_config_t()
+    m.utime, m.types_version, m.seed, m.team_size = 0, m.TYPES_VERSION, SEED, TEAM_SIZE
+    m.duration_s, m.referee, m.half_s = 1800.0, True, 600.0
+    for key, value in {**MATCH, **changes}.items():
+        setattr(m, key, value)
     return m
 
 
@@ -115,14 +144,16 @@ def _status(utime: int, team: int, player: int, state: int):
 def known_messages() -> list:
     """(utime, channel, message) in the order a match publishes them: FRAMES truth frames (one
     every 1/30 s), each after its sense, with game states, statuses and events in between."""
-    events = [(0, "TL_GAME", _game(0, 600))]
+    events = [(0, "TL_MATCH", match_config()), (0, "TL_GAME", _game(0, 600))]
     events += [(0, "TL_STATUS", _status(0, s[0], s[1], 2 if s[2] else 3)) for s in ROBOTS]
     events += [(e[0], "TL_EVENT", _event(*e)) for e in EVENTS]
     for k in range(FRAMES):
         events += [(utime_of(k - 1), "TL_SENSE", _sense(k))] if k in SENSE_FRAMES else []
         events.append((utime_of(k), "TL_TRUTH", _truth(k)))
     events.append((utime_of(FRAMES // 2), "TL_GAME", _game(utime_of(FRAMES // 2), 599)))
-    return sorted(events, key=lambda e: (e[0], e[1] != "TL_GAME"))
+    events.append((utime_of(FRAMES // 2), "TL_MATCH", match_config()))  # the world repeats it
+    first = {"TL_MATCH": 0, "TL_GAME": 1}  # as sim_world: TL_MATCH first of all, the game before frames
+    return sorted(events, key=lambda e: (e[0], first.get(e[1], 2)))
 
 
 def write_known_log(path: Path) -> Path:

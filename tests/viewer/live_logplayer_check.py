@@ -24,7 +24,9 @@ async def main(log: str, last_frame: int) -> list:
             player = await asyncio.create_subprocess_exec("lcm-logplayer", log, stdout=subprocess.DEVNULL)
             try:
                 while not frames or frames[-1]["truth"]["frame"] < last_frame:
-                    frames.append(await ws.receive_json(timeout=WAIT_S))
+                    message = await ws.receive_json(timeout=WAIT_S)
+                    if message["type"] == "frame":  # not the hello that brings the match's TL_MATCH
+                        frames.append(message)
             finally:
                 await player.wait()
         return frames

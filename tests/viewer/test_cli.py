@@ -1,10 +1,13 @@
-"""The server's command line: a bad log, a corrupt log, a port in use and bad options each give
-one line on stderr and exit code 2."""
+"""The server's command line: a bad log, a corrupt log, a log without the match's geometry
+(TL_MATCH) or of other LCM types, a port in use and bad options each give one line on stderr
+and exit code 2."""
 import socket
 
 import pytest
 
 from conftest import ViewerServer, run_module
+from known_log import known_messages, match_config
+from touchline_viewer.field import TYPES_VERSION
 
 VIEWER = "touchline_viewer"
 
@@ -51,10 +54,30 @@ def test_bad_options_are_one_line_and_exit_2(args):
     assert_one_line_exit_2(run_module(VIEWER, *args))
 
 
-def test_a_bad_config_is_one_line_and_exit_2(known_log, tmp_path):
-    config = tmp_path / "bad.ini"
-    config.write_text("[field]\nlength_mm = long\n")
-    assert_one_line_exit_2(run_module(VIEWER, "--log", known_log, "--config", config), "length_mm")
+def write_log(path, replace_match):
+    """The known log with each TL_MATCH replaced by `replace_match` bytes (None: left out)."""
+    import lcm
+    writer = lcm.EventLog(str(path), "w", overwrite=True)
+    for utime, channel, message in known_messages():
+        data = message.encode() if channel != "TL_MATCH" else replace_match
+        if data is not None:
+            writer.write_event(utime, channel, data)
+    writer.close()
+    return path
+
+
+def test_a_log_without_the_match_s_geometry_is_one_line_and_exit_2(tmp_path):
+    log = write_log(tmp_path / "old.lcmlog", None)  # as sim_world wrote them before TL_MATCH
+    assert_one_line_exit_2(run_module(VIEWER, "--log", log), "no TL_MATCH", f"version {TYPES_VERSION}")
+
+
+def test_a_log_of_other_lcm_types_names_their_version(tmp_path):
+    other = bytearray(match_config().encode())
+    other[:8] = b"\x01" * 8  # another fingerprint: another match_config_t
+    other[16:18] = (TYPES_VERSION + 1).to_bytes(2, "big")
+    log = write_log(tmp_path / "newer.lcmlog", bytes(other))
+    assert_one_line_exit_2(run_module(VIEWER, "--log", log), f"types version {TYPES_VERSION + 1}",
+                           f"reads version {TYPES_VERSION}")
 
 
 def test_it_listens_on_127_0_0_1_and_stops_cleanly_on_sigterm(known_log):

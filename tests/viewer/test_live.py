@@ -1,6 +1,6 @@
-"""The live view: LCM messages decoded and pushed to the page, decimated to ~30 a second,
-each truth with its own frame's sonar; a log played into it with lcm-logplayer shows what
-the replay of that log shows."""
+"""The live view: the match's geometry (TL_MATCH) first, then LCM messages decoded and pushed
+to the page, decimated to ~30 a second, each truth with its own frame's sonar; a log played
+into it with lcm-logplayer shows what the replay of that log shows."""
 import asyncio
 import json
 import subprocess
@@ -10,22 +10,19 @@ from pathlib import Path
 import aiohttp
 
 from conftest import ROOT, viewer_env
-from known_log import FRAMES, SENSE_FRAMES, known_messages
-from touchline_viewer.field import load_field
+from known_log import FRAMES, MATCH, SENSE_FRAMES, known_messages, match_config
 from touchline_viewer.live import LiveSource
 from touchline_viewer.replay_log import ReplayLog
 from touchline_viewer.server import make_app, start
 
-FIELD = load_field(ROOT / "config" / "spl2011.ini")
 
-
-async def watch_memq(publish_all: bool) -> tuple:
-    """A live viewer on memq:// (in this process, no network); returns (hello, frames received)."""
+async def watch_memq(publish_all: bool, then_another_match: bool = False) -> tuple:
+    """A live viewer on memq:// (in this process, no network); returns (hellos, frames received)."""
     source = LiveSource("memq://")
-    runner, url = await start(make_app(source, FIELD), 0)
+    runner, url = await start(make_app(source), 0)
     try:
         async with aiohttp.ClientSession() as session, session.ws_connect(url + "ws") as ws:
-            hello = await ws.receive_json(timeout=10)
+            hellos = [await ws.receive_json(timeout=10)]
             last = FRAMES - 1 if publish_all else 0
             for _, channel, message in known_messages():  # up to the last frame's truth
                 source.lc.publish(channel, message.encode())
@@ -33,15 +30,32 @@ async def watch_memq(publish_all: bool) -> tuple:
                     break
             frames = []
             while not frames or frames[-1]["truth"]["frame"] < last:
-                frames.append(await ws.receive_json(timeout=10))
-            return hello, frames
+                message = await ws.receive_json(timeout=10)
+                (hellos if message["type"] == "hello" else frames).append(message)
+            if then_another_match:
+                source.lc.publish("TL_MATCH", match_config(field_length_mm=9000.0).encode())
+                hellos.append(await ws.receive_json(timeout=10))
+            return hellos, frames
     finally:
         await runner.cleanup()
 
 
+def test_the_page_learns_the_match_s_geometry_before_any_frame():
+    hellos, frames = asyncio.run(watch_memq(publish_all=False))
+    assert [h["type"] for h in hellos] == ["hello", "hello"]
+    assert hellos[0]["mode"] == "live" and hellos[0]["match"] is None, "nothing known before TL_MATCH"
+    assert hellos[1]["match"]["field"]["length_mm"] == MATCH["field_length_mm"]
+    assert hellos[1]["match"]["camera"]["near_range_mm"] == MATCH["camera_near_range_mm"]
+    assert frames, "frames follow once the geometry is known"
+
+
+def test_another_match_on_the_bus_is_a_new_hello():
+    hellos, _ = asyncio.run(watch_memq(publish_all=False, then_another_match=True))
+    assert [h["match"]["field"]["length_mm"] for h in hellos[1:]] == [MATCH["field_length_mm"], 9000.0]
+
+
 def test_published_truth_reaches_the_page_as_the_replay_decodes_it(known_log):
-    hello, frames = asyncio.run(watch_memq(publish_all=False))
-    assert hello["mode"] == "live" and hello["field"]["length_mm"] == 6000
+    _, frames = asyncio.run(watch_memq(publish_all=False))
     replayed = ReplayLog.load(known_log).frame(0)
     for part in ("truth", "sense", "game", "status", "events"):
         assert frames[-1][part] == replayed[part], part

@@ -1,6 +1,7 @@
-"""The page in headless Chromium, replaying the known log: robots and ball drawn where the
-log says (page state and pixels), penalised and fallen badges, sonar bars, match events,
-step, scrub and play, and the README's screenshot."""
+"""The page in headless Chromium, replaying the known log: the field, robots and ball drawn
+where and as large as the log says (page state and pixels), chest LEDs, penalised and fallen
+badges, sonar bars and camera cones with the match's own sizes, match events, step, scrub and
+play, and the README's screenshot."""
 import io
 import json
 import math
@@ -12,17 +13,16 @@ import pytest
 from PIL import Image
 
 from conftest import ROOT, VIEWPORT, WAIT_S
-from known_log import EVENTS, FRAMES, ROBOTS, SCORE, SENSE_FRAMES, ball_at, robot_at, sonar_at, utime_of
-from touchline_viewer.field import load_field
+from known_log import (EVENTS, FRAMES, LEDS, MATCH, ROBOTS, SCORE, SENSE_FRAMES, ball_at, camera_range_mm, robot_at,
+                       sonar_at, utime_of)
 
-FIELD = load_field(ROOT / "config" / "spl2011.ini")
 TEAM_RGB = {0: (0x1E, 0x63, 0xFF), 1: (0xE8, 0x23, 0x2A)}
 PENALISED_RGB = {0: (0x55, 0x77, 0xC5), 1: (0xBA, 0x57, 0x5B)}
 INACTIVE_RGB = (0x8C, 0x8C, 0x8C)
 BALL_RGB = (0xFF, 0x7F, 0x00)
 BADGE_RGB = {"P": (0xFF, 0xD2, 0x1F), "F": (0xFF, 0x4F, 0xD8)}
 SONAR_RGB = (0x00, 0xE5, 0xFF)
-SONAR_RANGE_MM, SONAR_HALF_WIDTH_MM = 1000, 100
+SONAR_RANGE_MM, SONAR_HALF_WIDTH_MM = MATCH["sonar_range_mm"], MATCH["sonar_half_width_mm"]
 
 
 def drawn(page) -> dict:
@@ -44,7 +44,8 @@ def wait_for_frame(page, k: int) -> dict:
 def expected_pixel(state: dict, x: float, y: float) -> tuple:
     """Where field point (x, y) mm must be on the canvas: the field and border fitted, centred."""
     w, h = state["canvas"]["width"], state["canvas"]["height"]
-    s = min(w / (FIELD["length_mm"] + 2 * FIELD["border_mm"]), h / (FIELD["width_mm"] + 2 * FIELD["border_mm"]))
+    span_x, span_y = (MATCH[f"field_{side}_mm"] + 2 * MATCH["border_mm"] for side in ("length", "width"))
+    s = min(w / span_x, h / span_y)
     return w / 2 + x * s, h / 2 - y * s
 
 
@@ -87,6 +88,10 @@ def assert_shows_frame(state: dict, k: int) -> None:
         for part in ("body", "left", "right"):
             assert_drawn_at(state, got[part], want[part])
         assert_sonar_drawn(state, got, want, k)
+        reach_px = camera_range_mm(want["head"][1]) * state["scale_px_per_mm"]
+        assert got["camera"]["range_px"] == pytest.approx(reach_px, abs=0.06), "the match's camera reach"
+        led = LEDS.get(spec[:2])
+        assert got["led"] == ({"colour": "#%06x" % led, "radius_px": got["led"]["radius_px"]} if led else None)
     assert [e["text"] for e in state["events"]] == [e[4] for e in EVENTS if e[0] <= utime_of(k)]
 
 
@@ -123,6 +128,26 @@ def test_ball_and_feet_pixels_have_their_colours(page, replay_server):
         for foot in ("left", "right"):
             ok, found = colour_near(image, robot[foot]["px"], robot[foot]["py"], rgb)
             assert ok, f"team {robot['team']} player {robot['player']} {foot} foot pixel is {found}, not {rgb}"
+
+
+def test_the_field_is_the_match_s_own(page, replay_server):
+    state = open_viewer(page, replay_server.url)
+    assert state["field"]["length_mm"] == MATCH["field_length_mm"]
+    assert state["field"]["width_mm"] == MATCH["field_width_mm"]
+    image = screenshot(page)
+    for x, y in ((MATCH["field_length_mm"] / 2 - 25, 0), (-MATCH["field_length_mm"] / 2 + 25, 1000)):
+        ok, found = colour_near(image, *expected_pixel(state, x, y), (0xF4, 0xF4, 0xF4), tolerance=40)
+        assert ok, f"the goal line at x = {x} mm is {found}, not white"
+
+
+def test_chest_leds_are_drawn_on_the_body(page, replay_server):
+    state = open_viewer(page, replay_server.url)
+    image = screenshot(page)
+    robots = {(r["team"], r["player"]): r for r in state["robots"]}
+    for key, rgb in LEDS.items():
+        body = robots[key]["body"]
+        ok, found = colour_near(image, body["px"], body["py"] + 1, tuple(rgb.to_bytes(3, "big")))
+        assert ok, f"{key}'s chest LED is {found}, not #{rgb:06x}"
 
 
 def test_badges_and_sonar_bars_have_their_colours(page, replay_server):

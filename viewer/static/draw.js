@@ -1,5 +1,7 @@
 // Drawing the field and one world_truth_t on a 2D canvas. Field frame: mm, origin at the
-// centre, +x towards the goal team 0 attacks, +y left; screen y grows downwards.
+// centre, +x towards the goal team 0 attacks, +y left; screen y grows downwards. Every size
+// (field, goals, ball, feet, camera, sonar) is the match's own, from its TL_MATCH (the
+// hello's `match`): nothing here knows a config.
 
 export const TEAM_COLOURS = ["#1e63ff", "#e8232a"]; // team 0 blue, team 1 red
 export const INACTIVE_COLOUR = "#8c8c8c";
@@ -10,12 +12,13 @@ export const BALL_COLOUR = "#ff7f00";
 const CARPET = "#2e7d32";
 const LINE = "#f4f4f4";
 
-// The thesis camera model: a 60 degree cone along body heading + head yaw whose range grows
-// as the head looks up (pitch is + down): (MAXPITCH - pitch) * 3000 / (MAXPITCH - MINPITCH) + 1000 mm.
-export const CAMERA = { fovRad: Math.PI / 3, minPitch: -0.67, maxPitch: 0.51 };
-export function cameraRangeMm(pitch) {
-  const { minPitch, maxPitch } = CAMERA;
-  return Math.max(0, (maxPitch - pitch) * 3000 / (maxPitch - minPitch) + 1000);
+// The thesis camera model (Algorithm 2.3, sim/src/camera.cpp): a cone of field_of_view_rad
+// along body heading + head yaw whose range grows as the head looks up (pitch is + down):
+// near_range + range_span * (max_pitch - pitch) / (max_pitch - min_pitch), pitch clamped.
+export function cameraRangeMm(camera, pitch) {
+  const { min_pitch_rad: lo, max_pitch_rad: hi } = camera;
+  const clamped = Math.min(Math.max(pitch, lo), hi);
+  return camera.near_range_mm + camera.range_span_mm * (hi - clamped) / (hi - lo);
 }
 
 // The mm -> canvas-pixel transform that fits the field and its border into w x h CSS px.
@@ -97,9 +100,9 @@ export function robotColour(r) {
   return (r.penalised ? PENALISED_COLOURS : TEAM_COLOURS)[r.team] || INACTIVE_COLOUR;
 }
 
-function drawCameraCone(ctx, v, r) {
+function drawCameraCone(ctx, v, camera, r) {
   const [x, y, th] = r.body, [yaw, pitch] = r.head;
-  const dir = th + yaw, half = CAMERA.fovRad / 2, range = cameraRangeMm(pitch) * v.s;
+  const dir = th + yaw, half = camera.field_of_view_rad / 2, range = cameraRangeMm(camera, pitch) * v.s;
   ctx.save();
   ctx.beginPath();
   ctx.moveTo(v.px(x), v.py(y));
@@ -116,8 +119,8 @@ function drawCameraCone(ctx, v, r) {
   return { dir_rad: Math.round(dir * 1000) / 1000, range_px: round1(range) };
 }
 
-function drawFoot(ctx, v, f, pose, colour) {
-  const [x, y, th] = pose, l = f.foot_length_mm * v.s, w = f.foot_width_mm * v.s;
+function drawFoot(ctx, v, foot, pose, colour) {
+  const [x, y, th] = pose, l = foot.length_mm * v.s, w = foot.width_mm * v.s;
   ctx.save();
   ctx.translate(v.px(x), v.py(y));
   ctx.rotate(-th);
@@ -149,6 +152,24 @@ function drawHeading(ctx, v, r) {
   ctx.restore();
 }
 
+// The chest LED the robot asked for (act_t, carried in the truth), as a disc on the body
+// centre between the feet (a third of their separation, so both feet stay in view); off
+// (black) draws nothing. Magenta (#ff00ff) is the shim's "behaviour failed".
+function drawLed(ctx, v, foot, r) {
+  if (!r.led || r.led === "#000000") return null;
+  const radius = Math.max(3, foot.separation_mm / 3 * v.s);
+  ctx.save();
+  ctx.beginPath();
+  ctx.arc(v.px(r.body[0]), v.py(r.body[1]), radius, 0, 2 * Math.PI);
+  ctx.fillStyle = r.led;
+  ctx.fill();
+  ctx.lineWidth = 1;
+  ctx.strokeStyle = "#000";
+  ctx.stroke();
+  ctx.restore();
+  return { colour: r.led, radius_px: round1(radius) };
+}
+
 const labelY = (v, r) => v.py(r.body[1]) - Math.max(16, 170 * v.s);
 
 function drawNumber(ctx, v, r) {
@@ -165,23 +186,23 @@ function drawNumber(ctx, v, r) {
   ctx.restore();
 }
 
-// The sonar (thesis Algorithm 2.4) watches a corridor ahead of the robot, 100 mm either side
-// of its centre line and 1000 mm long; the left half gives sonar_left. A reading is the nearest
-// obstacle as a fraction of the range (1: nothing). Each half with an obstacle is drawn as a
-// bar from the body centre (under the feet) to the obstacle, with a cap across the half there.
-export const SONAR = { rangeMm: 1000, halfWidthMm: 100, colour: "#00e5ff" };
+// The sonar (thesis Algorithm 2.4) watches a corridor ahead of the robot, half_width_mm either
+// side of its centre line and range_mm long; the left half gives sonar_left. A reading is the
+// nearest obstacle as a fraction of the range (1: nothing). Each half with an obstacle is drawn
+// as a bar from the body centre (under the feet) to the obstacle, with a cap across the half there.
+export const SONAR_COLOUR = "#00e5ff";
 
-function drawSonar(ctx, v, r, reading) {
+function drawSonar(ctx, v, sonar, r, reading) {
   if (!reading) return null; // no TL_SENSE for this frame or robot
-  const [x, y, th] = r.body, c = Math.cos(th), s = Math.sin(th), w = SONAR.halfWidthMm;
+  const [x, y, th] = r.body, c = Math.cos(th), s = Math.sin(th), w = sonar.half_width_mm;
   const at = (ahead, left) => [x + ahead * c - left * s, y + ahead * s + left * c];
   const bars = [];
   ctx.save();
-  ctx.fillStyle = ctx.strokeStyle = SONAR.colour;
+  ctx.fillStyle = ctx.strokeStyle = SONAR_COLOUR;
   ctx.lineWidth = 2;
   for (const [side, value, sign] of [["left", reading[0], 1], ["right", reading[1], -1]]) {
     if (!(value < 1)) continue;
-    const len = Math.max(0, value) * SONAR.rangeMm;
+    const len = Math.max(0, value) * sonar.range_mm;
     ctx.beginPath();
     for (const [a, l] of [[0, 0.2], [len, 0.2], [len, 0.8], [0, 0.8]]) {
       const [px, py] = at(a, sign * l * w);
@@ -195,8 +216,8 @@ function drawSonar(ctx, v, r, reading) {
   return { left: reading[0], right: reading[1], bars };
 }
 
-function drawFallen(ctx, v, f, r) { // a cross over the body
-  const [x, y] = r.body, d = (f.foot_length_mm / 2 + 30) * v.s;
+function drawFallen(ctx, v, foot, r) { // a cross over the body
+  const [x, y] = r.body, d = (foot.length_mm / 2 + 30) * v.s;
   ctx.save();
   ctx.strokeStyle = "#101010";
   ctx.lineWidth = 3;
@@ -231,8 +252,8 @@ function drawBadges(ctx, v, r) { // right of the number
   });
 }
 
-function drawBall(ctx, v, f, ball) {
-  const r = Math.max(4.5, f.ball_diameter_mm / 2 * v.s);
+function drawBall(ctx, v, diameterMm, ball) {
+  const r = Math.max(4.5, diameterMm / 2 * v.s);
   ctx.save();
   ctx.beginPath();
   ctx.arc(v.px(ball[0]), v.py(ball[1]), r, 0, 2 * Math.PI);
@@ -254,33 +275,35 @@ function clipToCarpet(ctx, v, f) {
 
 const pixel = (v, pose) => ({ x: pose[0], y: pose[1], px: round1(v.px(pose[0])), py: round1(v.py(pose[1])) });
 
-// Draws one truth frame over the field, with the sonar of the same frame's sense (or null);
-// returns what it drew, in canvas pixels.
-export function drawTruth(ctx, v, f, truth, sense) {
+// Draws one truth frame over the field of `match` (the hello's), with the sonar of the same
+// frame's sense (or null); returns what it drew, in canvas pixels.
+export function drawTruth(ctx, v, match, truth, sense) {
   const key = (r) => `${r.team}/${r.player}`;
   const sonars = new Map((sense ? sense.robots : []).map((s) => [key(s), s.sonar]));
   ctx.save();
-  clipToCarpet(ctx, v, f); // the boundary walls: no camera sees past them
-  const robots = truth.robots.map((r) => ({ r, cone: drawCameraCone(ctx, v, r) }));
+  clipToCarpet(ctx, v, match.field); // the boundary walls: no camera sees past them
+  const robots = truth.robots.map((r) => ({ r, cone: drawCameraCone(ctx, v, match.camera, r) }));
   ctx.restore();
-  for (const robot of robots) robot.sonar = drawSonar(ctx, v, robot.r, sonars.get(key(robot.r)));
-  for (const { r } of robots) {
-    drawFoot(ctx, v, f, r.left, robotColour(r));
-    drawFoot(ctx, v, f, r.right, robotColour(r));
+  for (const robot of robots) robot.sonar = drawSonar(ctx, v, match.sonar, robot.r, sonars.get(key(robot.r)));
+  for (const robot of robots) {
+    const { r } = robot;
+    drawFoot(ctx, v, match.foot, r.left, robotColour(r));
+    drawFoot(ctx, v, match.foot, r.right, robotColour(r));
     drawHeading(ctx, v, r);
-    if (r.fallen) drawFallen(ctx, v, f, r);
+    robot.led = drawLed(ctx, v, match.foot, r);
+    if (r.fallen) drawFallen(ctx, v, match.foot, r);
   }
   for (const robot of robots) {
     drawNumber(ctx, v, robot.r);
     robot.badges = drawBadges(ctx, v, robot.r);
   }
-  const ballRadius = drawBall(ctx, v, f, truth.ball);
+  const ballRadius = drawBall(ctx, v, match.ball_diameter_mm, truth.ball);
   return {
     ball: { ...pixel(v, truth.ball), radius_px: round1(ballRadius), colour: BALL_COLOUR },
-    robots: robots.map(({ r, cone, sonar, badges }) => ({
+    robots: robots.map(({ r, cone, sonar, badges, led }) => ({
       team: r.team, player: r.player, active: r.active, penalised: r.penalised, fallen: r.fallen,
       colour: robotColour(r), body: { ...pixel(v, r.body), theta: r.body[2] },
-      left: pixel(v, r.left), right: pixel(v, r.right), camera: cone, sonar, badges,
+      left: pixel(v, r.left), right: pixel(v, r.right), camera: cone, sonar, badges, led,
     })),
   };
 }

@@ -8,7 +8,7 @@ const canvas = $("field");
 const ctx = canvas.getContext("2d");
 if (new URLSearchParams(location.search).has("export")) document.body.classList.add("export");
 
-let hello = null;   // {mode, source, field, replay?}
+let hello = null;   // {mode, source, match (TL_MATCH: null live until it comes), replay?}
 let frame = null;   // the last frame received: {truth, sense, game, status, events, replay?, ack}
 let socket = null;
 let nextSeq = 1;
@@ -60,15 +60,22 @@ function draw() {
   canvas.width = Math.round(box.width * dpr);
   canvas.height = Math.round(box.height * dpr);
   ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
-  const view = makeView(hello.field, box.width, box.height);
-  lastView = view;
-  drawField(ctx, view, hello.field);
-  drawn = frame && frame.truth ? drawTruth(ctx, view, hello.field, frame.truth, frame.sense) : null;
+  const match = hello.match;
+  drawn = null;
+  if (match) {
+    const view = makeView(match.field, box.width, box.height);
+    lastView = view;
+    drawField(ctx, view, match.field);
+    drawn = frame && frame.truth ? drawTruth(ctx, view, match, frame.truth, frame.sense) : null;
+  } else {
+    ctx.fillStyle = "#1b1f24";
+    ctx.fillRect(0, 0, box.width, box.height);
+  }
   if (!drawn) {
     ctx.fillStyle = "#fff";
     ctx.font = "16px 'DejaVu Sans', sans-serif";
     ctx.textAlign = "center";
-    ctx.fillText("waiting for TL_TRUTH…", box.width / 2, box.height / 2);
+    ctx.fillText(match ? "waiting for TL_TRUTH…" : "waiting for the match's TL_MATCH…", box.width / 2, box.height / 2);
   }
   const out = $("state");
   out.textContent = JSON.stringify(state());
@@ -81,6 +88,7 @@ function state() {
     mode: hello && hello.mode,
     canvas: { width: canvas.clientWidth, height: canvas.clientHeight },
     scale_px_per_mm: lastView ? lastView.s : null,
+    field: hello && hello.match ? hello.match.field : null,
     utime: truth ? truth.utime : null,
     frame: truth ? truth.frame : null,
     game: frame ? frame.game : null,

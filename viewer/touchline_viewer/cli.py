@@ -1,7 +1,9 @@
 """python -m touchline_viewer: serves the match viewer on 127.0.0.1, live from LCM or replaying a log.
 
-Live (default): subscribes to TL_TRUTH, TL_GAME and TL_STATUS on --lcm-url.
-Replay: --log FILE opens an lcm-logger log; the page gets play, pause, step, scrub and speed."""
+Live (default): subscribes to TL_MATCH, TL_TRUTH, TL_SENSE, TL_GAME, TL_STATUS and TL_EVENT on --lcm-url.
+Replay: --log FILE opens an lcm-logger log; the page gets play, pause, step, scrub and speed.
+The field, goals, ball, feet, camera and sonar are drawn with the sizes the match itself
+publishes on TL_MATCH (the first message of its log)."""
 import argparse
 import asyncio
 import signal
@@ -9,11 +11,8 @@ import sys
 from pathlib import Path
 
 from .errors import ViewerError, one_line
-from .field import load_field
-from .lcm_types import REPO
 
 DEFAULT_PORT = 8035
-DEFAULT_CONFIG = REPO / "config" / "spl2011.ini"
 PROG = "touchline_viewer"
 
 
@@ -41,8 +40,6 @@ def parse_args(argv) -> argparse.Namespace:
     source.add_argument("--lcm-url", metavar="URL", help="LCM URL to watch (default udpm://239.255.76.67:7667?ttl=0)")
     p.add_argument("--port", type=port_number, default=DEFAULT_PORT,
                    help=f"port on 127.0.0.1 (default {DEFAULT_PORT}; 0 picks a free one)")
-    p.add_argument("--config", type=Path, default=DEFAULT_CONFIG,
-                   help="world config with the field geometry (default config/spl2011.ini)")
     return p.parse_args(argv)
 
 
@@ -60,13 +57,13 @@ def describe(source) -> str:
     return f"live from {source.url}"
 
 
-async def serve(source, field: dict, port: int) -> None:
+async def serve(source, port: int) -> None:
     from .server import make_app, start
     stop = asyncio.Event()
     loop = asyncio.get_running_loop()
     for sig in (signal.SIGINT, signal.SIGTERM):
         loop.add_signal_handler(sig, stop.set)
-    runner, url = await start(make_app(source, field), port)
+    runner, url = await start(make_app(source), port)
     print(f"touchline viewer: {url} ({describe(source)}); Ctrl-C stops", flush=True)
     try:
         await stop.wait()
@@ -77,9 +74,8 @@ async def serve(source, field: dict, port: int) -> None:
 def main(argv=None) -> int:
     args = parse_args(argv)
     try:
-        field = load_field(args.config)
         source = open_source(args)
-        asyncio.run(serve(source, field, args.port))
+        asyncio.run(serve(source, args.port))
     except ViewerError as e:
         print(f"{PROG}: {one_line(e)}", file=sys.stderr)
         return 2

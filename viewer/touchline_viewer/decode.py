@@ -1,11 +1,12 @@
-"""LCM messages (TL_TRUTH, TL_SENSE, TL_GAME, TL_STATUS, TL_EVENT) to the JSON-ready dicts
-the page draws."""
+"""LCM messages (TL_MATCH, TL_TRUTH, TL_SENSE, TL_GAME, TL_STATUS, TL_EVENT) to the JSON-ready
+dicts the page draws."""
 import struct
 
+from .field import MATCH, match_dict
 from .lcm_types import import_touchline
 
 TRUTH, SENSE, GAME, STATUS, EVENT = "TL_TRUTH", "TL_SENSE", "TL_GAME", "TL_STATUS", "TL_EVENT"
-CHANNELS = (TRUTH, SENSE, GAME, STATUS, EVENT)
+CHANNELS = (MATCH, TRUTH, SENSE, GAME, STATUS, EVENT)
 STATUS_NAMES = {1: "JOINED", 2: "ACTIVE", 3: "TIMED_OUT", 4: "REJOINED", 5: "REJECTED"}
 EVENT_KINDS = {0: "STATE_CHANGE", 1: "GOAL", 2: "PENALTY", 3: "RELEASED", 4: "FALL", 5: "BALL_OUT"}
 RECENT_EVENTS = 5  # the latest match events each frame carries for the HUD
@@ -25,7 +26,8 @@ def truth_dict(data: bytes) -> dict:
         "robots": [{"team": r.team, "player": r.player, "active": bool(r.active),
                     "penalised": bool(r.penalised), "fallen": bool(r.fallen),
                     "body": _pose(r.body), "left": _pose(r.left_foot), "right": _pose(r.right_foot),
-                    "head": [round(r.head_yaw_rad, 4), round(r.head_pitch_rad, 4)]} for r in m.robots],
+                    "head": [round(r.head_yaw_rad, 4), round(r.head_pitch_rad, 4)],
+                    "led": f"#{r.chest_led & 0xFFFFFF:06x}"} for r in m.robots],
     }
 
 
@@ -57,7 +59,7 @@ def event_dict(data: bytes) -> dict:
             "player": m.player, "text": m.text}
 
 
-DECODERS = {TRUTH: truth_dict, SENSE: sense_dict, GAME: game_dict, STATUS: status_dict, EVENT: event_dict}
+DECODERS = {MATCH: match_dict, TRUTH: truth_dict, SENSE: sense_dict, GAME: game_dict, STATUS: status_dict, EVENT: event_dict}
 
 
 def decode(channel: str, data: bytes):

@@ -11,9 +11,8 @@ from pathlib import Path
 
 from PIL import Image
 
-from .cli import DEFAULT_CONFIG, OneLineParser
+from .cli import OneLineParser
 from .errors import ViewerError, one_line
-from .field import load_field
 
 PROG = "touchline_viewer.export"
 MAX_FPS = 50  # GIF frame delays are in hundredths of a second
@@ -35,7 +34,6 @@ def parse_args(argv) -> argparse.Namespace:
     p.add_argument("--fps", type=float, default=10.0, help=f"GIF frames per second (default 10, at most {MAX_FPS})")
     p.add_argument("--out", type=Path, help="output file (default: beside the log, named by the times)")
     p.add_argument("--size", type=size, default=(1100, 760), metavar="WxH", help="image size in pixels (default 1100x760)")
-    p.add_argument("--config", type=Path, default=DEFAULT_CONFIG, help="world config with the field geometry")
     args = p.parse_args(argv)
     span = args.start is not None or args.end is not None
     if (args.at is None) == (not span):
@@ -61,11 +59,11 @@ def check_in_log(log, times: list) -> None:
             raise ViewerError(f"time {t:g} s is outside the log ({log.t0:.2f}..{log.t1:.2f} s)")
 
 
-async def screenshots(log, field: dict, times: list, width: int, height: int) -> list:
+async def screenshots(log, times: list, width: int, height: int) -> list:
     """One PNG (bytes) per time, from the viewer page served on a free port of 127.0.0.1."""
     from . import browser
     from .server import make_app, start
-    runner, url = await start(make_app(log, field), 0)
+    runner, url = await start(make_app(log), 0)
     try:
         async with browser.page(width, height) as page:
             await page.goto(url + "?export=1")
@@ -93,11 +91,10 @@ def main(argv=None) -> int:
     args = parse_args(argv)
     try:
         from .replay_log import ReplayLog
-        field = load_field(args.config)
         log = ReplayLog.load(args.log)
         times = [args.at] if args.at is not None else frame_times(args.start, args.end, args.fps)
         check_in_log(log, times)
-        shots = asyncio.run(screenshots(log, field, times, *args.size))
+        shots = asyncio.run(screenshots(log, times, *args.size))
         write(args.out, shots, args.fps)
     except ViewerError as e:
         print(f"{PROG}: {one_line(e)}", file=sys.stderr)

@@ -1,5 +1,6 @@
 """Live view: subscribes to LCM and pushes the latest truth (with its frame's sonar), game
-state, robot statuses and match events to every connected page, at most ~30 times a second."""
+state, robot statuses and match events to every connected page, at most ~30 times a second,
+once the match's geometry (TL_MATCH) is known; a new TL_MATCH (another match) is a new hello."""
 import asyncio
 from collections import deque
 
@@ -7,6 +8,7 @@ import lcm
 
 from .decode import CHANNELS, EVENT, GAME, RECENT_EVENTS, SENSE, STATUS, TRUTH, decode
 from .errors import ViewerError
+from .field import MATCH
 
 DEFAULT_LCM_URL = "udpm://239.255.76.67:7667?ttl=0"
 SEND_PERIOD_S = 1 / 30
@@ -25,13 +27,14 @@ class LiveSource:
             raise ViewerError(f"cannot open LCM at {url}: {e}{hint}") from None
         for channel in CHANNELS:
             self.lc.subscribe(channel, self._on_message)
+        self.match = None  # the latest TL_MATCH: the page draws nothing before it
         self.truth = self.sense = None  # sense: the TL_SENSE of the truth's frame
         self.games: deque = deque(maxlen=RECENT_GAMES)
         self._latest_sense = None
         self.statuses: dict = {}
         self.events: deque = deque(maxlen=RECENT_EVENTS)
         self.version = 0  # bumped by every decoded message
-        self.clients: set = set()  # async send callables
+        self.clients: set = set()  # each has async hello(dict) and frame(dict)
         self._task = None
 
     def start(self) -> None:
@@ -46,7 +49,7 @@ class LiveSource:
             await asyncio.gather(self._task, return_exceptions=True)
 
     def hello(self) -> dict:
-        return {"mode": "live", "source": self.url}
+        return {"mode": "live", "source": self.url, "match": self.match}
 
     def game(self):
         """The game as of the truth's time, as the replay pairs them: a newer state may
@@ -62,7 +65,11 @@ class LiveSource:
         message = decode(channel, data)  # handlers never throw: a bad message is dropped
         if message is None:
             return
-        if channel == TRUTH:
+        if channel == MATCH:
+            if message == self.match:
+                return  # the world repeats it once a second: nothing new to draw
+            self.match = message
+        elif channel == TRUTH:
             self.truth = message
             sense = self._latest_sense
             self.sense = sense if sense and sense["frame"] == message["frame"] else None
@@ -79,11 +86,16 @@ class LiveSource:
         self.version += 1
 
     async def _broadcast(self) -> None:
-        sent = 0
+        sent, match_sent = 0, None
         while True:
             await asyncio.sleep(SEND_PERIOD_S)
-            if self.version == sent or self.truth is None or not self.clients:
+            if self.version == sent or self.match is None or not self.clients:
                 continue
-            sent = self.version
-            frame = self.frame()
-            await asyncio.gather(*(send(frame) for send in list(self.clients)), return_exceptions=True)
+            sent, clients = self.version, list(self.clients)
+            if self.match is not match_sent:  # the geometry first: frames are drawn on it
+                match_sent = self.match
+                hello = self.hello()
+                await asyncio.gather(*(client.hello(hello) for client in clients), return_exceptions=True)
+            if self.truth is not None:
+                frame = self.frame()
+                await asyncio.gather(*(client.frame(frame) for client in clients), return_exceptions=True)

@@ -18,7 +18,7 @@ class ReplaySession:
         self._anchor = (0.0, 0.0)  # (wall clock, sim seconds) when play last (re)started
 
     def hello(self) -> dict:
-        return {"mode": "replay", "source": self.log.name, "speeds": SPEEDS,
+        return {"mode": "replay", "source": self.log.name, "match": self.log.match, "speeds": SPEEDS,
                 "replay": {"t0": self.log.t0, "t1": self.log.t1, "count": self.log.count}}
 
     async def run(self) -> None:

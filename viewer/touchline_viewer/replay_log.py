@@ -1,5 +1,6 @@
-"""An lcm-logger log loaded for replay: its truth frames (each with its frame's sonar), game
-states, robot statuses and match events, indexed by simulated time."""
+"""An lcm-logger log loaded for replay: the match's geometry (its first TL_MATCH), its truth
+frames (each with its frame's sonar), game states, robot statuses and match events, indexed by
+simulated time."""
 from bisect import bisect_right
 from pathlib import Path
 
@@ -7,6 +8,7 @@ import lcm
 
 from .decode import EVENT, GAME, RECENT_EVENTS, SENSE, STATUS, TRUTH, decode
 from .errors import ViewerError
+from .field import MATCH, missing_match_reason
 
 LCM_LOG_MAGIC = b"\xed\xa1\xda\x01"  # first bytes of every lcm-logger event
 
@@ -14,10 +16,11 @@ LCM_LOG_MAGIC = b"\xed\xa1\xda\x01"  # first bytes of every lcm-logger event
 class ReplayLog:
     """Read-only after loading; shared by every replay connection."""
 
-    def __init__(self, name: str, truths: list, games: list, statuses: list, senses=(), events=()):
+    def __init__(self, name: str, match: dict, truths: list, games: list, statuses: list, senses=(), events=()):
         if not truths:
             raise ViewerError(f"log {name} has no {TRUTH} messages to show")
         self.name = name
+        self.match = match  # the page's geometry: field, ball, feet, camera, sonar
         self.truths = sorted(truths, key=lambda m: m["utime"])
         self.utimes = [m["utime"] for m in self.truths]
         self.games = sorted(games, key=lambda m: m["utime"])
@@ -37,17 +40,25 @@ class ReplayLog:
         with open(path, "rb") as f:
             if f.read(4) != LCM_LOG_MAGIC:
                 raise ViewerError(f"log {path} is not an lcm-logger log (empty or corrupt)")
-        found = {TRUTH: [], GAME: [], STATUS: [], SENSE: [], EVENT: []}
+        found = {MATCH: [], TRUTH: [], GAME: [], STATUS: [], SENSE: [], EVENT: []}
+        raw_match, any_truth = None, False  # the first TL_MATCH as logged; whether any TL_TRUTH was
         try:
             for event in lcm.EventLog(str(path), "r"):
+                if event.channel == MATCH and found[MATCH]:
+                    continue  # the world repeats it unchanged: the first is the match's
                 if event.channel in found:
+                    any_truth = any_truth or event.channel == TRUTH
+                    raw_match = event.data if raw_match is None and event.channel == MATCH else raw_match
                     message = decode(event.channel, event.data)
                     if message is not None:
                         found[event.channel].append(message)
         except (OSError, ValueError) as e:  # a truncated tail: keep what was read
             if not found[TRUTH]:
                 raise ViewerError(f"log {path} cannot be read: {e}") from None
-        return cls(path.name, found[TRUTH], found[GAME], found[STATUS], found[SENSE], found[EVENT])
+        if any_truth and not found[MATCH]:  # a match log this viewer cannot draw: say why
+            raise ViewerError(missing_match_reason(path.name, raw_match))
+        match = found[MATCH][0] if found[MATCH] else None
+        return cls(path.name, match, found[TRUTH], found[GAME], found[STATUS], found[SENSE], found[EVENT])
 
     @property
     def count(self) -> int:

@@ -1,4 +1,5 @@
-"""The web server: the page's static files on / and /static/, and frames on the /ws WebSocket."""
+"""The web server: the page's static files on / and /static/, and on the /ws WebSocket a hello
+(mode, source and the match's geometry) and then frames."""
 import asyncio
 import errno
 import json
@@ -14,12 +15,11 @@ from .replay_log import ReplayLog
 HOST = "127.0.0.1"  # the viewer never listens on any other address
 STATIC = Path(__file__).resolve().parents[1] / "static"
 SOURCE = web.AppKey("source", object)  # a LiveSource or a ReplayLog
-FIELD = web.AppKey("field", dict)
 
 
-def make_app(source, field: dict) -> web.Application:
+def make_app(source) -> web.Application:
     app = web.Application()
-    app[SOURCE], app[FIELD] = source, field
+    app[SOURCE] = source
     app.router.add_get("/", _index)
     app.router.add_get("/ws", _websocket)
     app.router.add_static("/static/", STATIC)
@@ -60,24 +60,30 @@ async def _websocket(request: web.Request) -> web.WebSocketResponse:
     ws = web.WebSocketResponse()
     await ws.prepare(request)
     source = request.app[SOURCE]
-
-    async def send(frame: dict) -> None:
-        await ws.send_str(json.dumps({"type": "frame", **frame}, separators=(",", ":")))
-
+    client = _Client(ws)
     if isinstance(source, ReplayLog):
-        await _serve_replay(ws, source, request.app[FIELD], send)
+        await _serve_replay(ws, source, client)
     else:
-        await _serve_live(ws, source, request.app[FIELD], send)
+        await _serve_live(ws, source, client)
     return ws
 
 
-async def _send_hello(ws, hello: dict, field: dict) -> None:
-    await ws.send_str(json.dumps({"type": "hello", "field": field, **hello}))
+class _Client:
+    """One page's WebSocket: a hello (again whenever the match changes), then frames."""
+
+    def __init__(self, ws: web.WebSocketResponse):
+        self.ws = ws
+
+    async def hello(self, hello: dict) -> None:
+        await self.ws.send_str(json.dumps({"type": "hello", **hello}))
+
+    async def frame(self, frame: dict) -> None:
+        await self.ws.send_str(json.dumps({"type": "frame", **frame}, separators=(",", ":")))
 
 
-async def _serve_replay(ws, log: ReplayLog, field: dict, send) -> None:
-    session = ReplaySession(log, send)
-    await _send_hello(ws, session.hello(), field)
+async def _serve_replay(ws, log: ReplayLog, client: _Client) -> None:
+    session = ReplaySession(log, client.frame)
+    await client.hello(session.hello())
     player = asyncio.create_task(session.run())
     try:
         async for message in ws:
@@ -93,13 +99,13 @@ async def _serve_replay(ws, log: ReplayLog, field: dict, send) -> None:
         await asyncio.gather(player, return_exceptions=True)
 
 
-async def _serve_live(ws, live: LiveSource, field: dict, send) -> None:
-    await _send_hello(ws, live.hello(), field)
-    if live.truth is not None:
-        await send(live.frame())
-    live.clients.add(send)
+async def _serve_live(ws, live: LiveSource, client: _Client) -> None:
+    await client.hello(live.hello())
+    if live.truth is not None and live.match is not None:
+        await client.frame(live.frame())
+    live.clients.add(client)
     try:
         async for _ in ws:  # the live view takes no commands
             pass
     finally:
-        live.clients.discard(send)
+        live.clients.discard(client)

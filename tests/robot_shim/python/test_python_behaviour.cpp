@@ -133,13 +133,13 @@ class PythonRobot : public testing::Test {
   void let_watcher_look() { wall_us_ += kCheckUs; }
 
   void expect_error_stand(const RobotAct& act) {
-    EXPECT_EQ(act.action_type, static_cast<int>(ActionCommand::ActionType::STAND));
+    EXPECT_EQ(robot_->blackboard().motion.active.actionType, ActionCommand::ActionType::STAND);
     EXPECT_EQ(act.leds, kErrorChestLed);
     EXPECT_FALSE(behaviour_->healthy());
   }
 
   void expect_walking(const RobotAct& act, float forward) {
-    EXPECT_EQ(act.action_type, static_cast<int>(ActionCommand::ActionType::WALK));
+    EXPECT_EQ(robot_->blackboard().motion.active.actionType, ActionCommand::ActionType::WALK);
     EXPECT_NE(act.leds, kErrorChestLed);
     EXPECT_FLOAT_EQ(robot_->blackboard().behaviour.request.body.forward, forward);
     EXPECT_TRUE(behaviour_->healthy());

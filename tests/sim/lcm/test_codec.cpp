@@ -31,9 +31,7 @@ RobotAct sample_act() {
   }
   act.head_yaw_rad = 0.3f;
   act.head_pitch_rad = -0.1f;
-  act.action_type = 2;
   act.leds = 0x123456;
-  act.odometry = {10, 20, 0.5f};
   act.behaviour_cpu_us = 1234;
   return act;
 }
@@ -98,7 +96,6 @@ TEST(Codec, ActSurvivesEncodeAndDecode) {
     EXPECT_EQ(out.right[i].dy_mm, in.right[i].dy_mm);
   }
   EXPECT_EQ(out.leds, in.leds);
-  EXPECT_EQ(out.odometry.theta_rad, in.odometry.theta_rad);
   EXPECT_EQ(out.behaviour_cpu_us, 1234);
 }
 

@@ -150,9 +150,7 @@ struct RobotAct {
   std::array<FootMotion, kMaxTicksPerFrame> right{};
   float head_yaw_rad = 0;   ///< + left
   float head_pitch_rad = 0; ///< + down
-  int action_type = 0;      ///< robot API ActionType of the body action
-  int32_t leds = 0;         ///< chest LED, 0xRRGGBB
-  Pose2D odometry;          ///< the walk's dead-reckoned body pose (odometry frame)
+  int32_t leds = 0;         ///< chest LED, 0xRRGGBB (the world shows it in its truth)
   int64_t behaviour_cpu_us = 0; ///< CPU time of this frame's behaviour tick (thread CPU clock)
   Pose2D localised;             ///< where the robot believes it is (field frame)
   std::vector<uint8_t> team_message; ///< to the teammates (empty: none this frame)

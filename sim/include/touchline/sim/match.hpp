@@ -34,6 +34,7 @@ struct TruthFrame {
     bool penalised = false;
     bool fallen = false;
     float head_yaw_rad = 0, head_pitch_rad = 0;
+    int32_t chest_led = 0; ///< 0xRRGGBB, as the robot last asked
   };
   GameInfo game;
   std::vector<Robot> robots; ///< sorted by (team, player)
@@ -108,11 +109,13 @@ class Match {
   const World& world() const { return world_; }
   World& world() { return world_; }
   const WorldConfig& config() const { return config_; }
+  uint64_t seed() const { return seed_; }
 
  private:
   struct OnField {
     int world_index = 0;
     float head_yaw_rad = 0, head_pitch_rad = 0;
+    int32_t chest_led = 0; ///< 0xRRGGBB, from the robot's latest answer
     std::deque<TickMotion> pending; ///< motions not yet stepped, oldest first
     int64_t fallen_until_utime = -1; ///< lying on the ground until then
     bool stopped = false;            ///< lost a ball contest this frame: its feet hold
