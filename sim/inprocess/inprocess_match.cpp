@@ -6,15 +6,12 @@ namespace touchline::inprocess {
 
 namespace {
 constexpr int64_t kInstance = 1; // one process: every robot is its own only claimant
-}
+} // namespace
 
-robot::Robot& InProcessMatch::add_robot(RobotId id, const robot::WalkDef& walk,
-                                        std::unique_ptr<api::Behaviour> behaviour,
-                                        const robot::LocalisationModeDef& localisation) {
-  const sim::JoinReply reply = match_.join(id, kInstance + static_cast<int64_t>(robots_.size()), 0);
+robot::Robot& InProcessMatch::add_robot(robot::RobotDef def, std::unique_ptr<api::Behaviour> behaviour) {
+  const sim::JoinReply reply = match_.join(def.id, kInstance + static_cast<int64_t>(robots_.size()), 0);
   if (!reply.accepted) throw std::invalid_argument(reply.reason);
-  robots_.push_back(std::make_unique<robot::Robot>(id, walk, std::move(behaviour), robot::BehaviourTimingDef{},
-                                                    robot::KickDef{}, localisation));
+  robots_.push_back(std::make_unique<robot::Robot>(std::move(def), std::move(behaviour)));
   return *robots_.back();
 }
 

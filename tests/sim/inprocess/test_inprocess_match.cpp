@@ -38,9 +38,10 @@ std::unique_ptr<inprocess::InProcessMatch> four_a_side(float duration_s, uint64_
   config.match.duration_s = duration_s;
   auto match = std::make_unique<inprocess::InProcessMatch>(config, seed);
   for (const Target& t : targets()) {
-    auto behaviour = behaviour::make_behaviour(
-        "goto", {{"x", std::to_string(t.x)}, {"y", std::to_string(t.y)}, {"theta", std::to_string(t.theta)}});
-    match->add_robot(t.id, robot::WalkDef{}, std::move(behaviour));
+    robot::RobotDef def;
+    def.id = t.id;
+    def.behaviour = {"goto", {{"x", std::to_string(t.x)}, {"y", std::to_string(t.y)}, {"theta", std::to_string(t.theta)}}, {}};
+    match->add_robot(def, behaviour::make_behaviour(def.behaviour.name, def.behaviour.params));
   }
   match->start();
   return match;

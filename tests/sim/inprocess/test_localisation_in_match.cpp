@@ -25,9 +25,10 @@ Errors four_a_side_errors(const sim::PerceptionDef& perception) {
   for (int team = 0; team < 2; ++team)
     for (int p = 1; p <= 4; ++p) {
       const float* s = spots[p - 1];
-      auto goto_spot = behaviour::make_behaviour(
-          "goto", {{"x", std::to_string(s[0])}, {"y", std::to_string(s[1])}, {"theta", std::to_string(s[2])}});
-      match.add_robot({team, p}, robot::WalkDef{}, std::move(goto_spot));
+      robot::RobotDef def;
+      def.id = {team, p};
+      def.behaviour = {"goto", {{"x", std::to_string(s[0])}, {"y", std::to_string(s[1])}, {"theta", std::to_string(s[2])}}, {}};
+      match.add_robot(def, behaviour::make_behaviour(def.behaviour.name, def.behaviour.params));
     }
   match.start();
   match.run_to_end();
