@@ -13,10 +13,9 @@
 
 #include <lcm/lcm-cpp.hpp>
 
-#include "touchline/behaviour/registry.hpp"
+#include "touchline/apps/behaviour_factory.hpp"
 #include "touchline/blackboard_snapshot_t.hpp"
 #include "touchline/lcm/snapshot.hpp"
-#include "touchline/python/python_behaviour.hpp"
 
 using namespace touchline;
 using Clock = std::chrono::steady_clock;
@@ -76,14 +75,17 @@ int main(int argc, char** argv) {
   try {
     const auto frames = go_to_ball_frames(TOUCHLINE_CORPUS);
     pybind11::scoped_interpreter interpreter(false, 0, nullptr, false);
-    python::PythonBehaviourDef def;
-    def.directory = TOUCHLINE_BEHAVIOUR_PY;
-    def.params = {{"skill", "GoToBall"}};
-    def.reload_check_interval_us = int64_t{1} << 60; // measure the tick, not the file watch
-    python::PythonBehaviour py(def);
-    auto cpp = behaviour::make_behaviour("GoToBall", {});
-    time_ticks(py, frames, 1); // warm up
-    const Figures python_figures = time_ticks(py, frames, rounds);
+    // The two robots as robot_shim makes them: --behaviour py --param skill=GoToBall, --behaviour GoToBall.
+    robot::RobotDef python_robot;
+    python_robot.behaviour = {"py", {{"skill", "GoToBall"}}, TOUCHLINE_BEHAVIOUR_PY};
+    python::PythonBehaviourDef runtime;
+    runtime.reload_check_interval_us = int64_t{1} << 60; // measure the tick, not the file watch
+    auto py = apps::make_behaviour(python_robot, runtime);
+    robot::RobotDef cpp_robot;
+    cpp_robot.behaviour.name = "GoToBall";
+    auto cpp = apps::make_behaviour(cpp_robot);
+    time_ticks(*py, frames, 1); // warm up
+    const Figures python_figures = time_ticks(*py, frames, rounds);
     const Figures cpp_figures = time_ticks(*cpp, frames, rounds);
 
     std::cout << std::fixed << std::setprecision(2) << "behaviour tick, GoToBall, " << frames.size()

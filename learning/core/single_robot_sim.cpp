@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "touchline/behaviour/registry.hpp"
+
 namespace touchline::learning {
 
 /// The behaviour a learner drives: it returns whatever command was set last.
@@ -12,8 +14,6 @@ class SingleRobotSim::Commanded : public api::Behaviour {
 };
 
 namespace {
-constexpr RobotId kRobot{0, 1};
-
 sim::WorldConfig learning_world(sim::WorldConfig world) {
   world.rules.referee = false;          // the game stays PLAYING: no kick-off, no penalties
   world.match.team_size = 1;
@@ -23,6 +23,12 @@ sim::WorldConfig learning_world(sim::WorldConfig world) {
 }
 } // namespace
 
+robot::RobotDef default_learning_robot() {
+  robot::RobotDef def;
+  def.localisation.perfect = true;
+  return def;
+}
+
 Pose2D default_ball_spot(const sim::FieldDef& field) {
   return {-(0.5f * field.length_mm + 0.5f * field.border_mm), -(0.5f * field.width_mm + 0.5f * field.border_mm), 0};
 }
@@ -30,17 +36,21 @@ Pose2D default_ball_spot(const sim::FieldDef& field) {
 SingleRobotSim::SingleRobotSim(SingleRobotDef def) : def_(std::move(def)) { def_.world = learning_world(def_.world); }
 
 void SingleRobotSim::reset(uint64_t seed, const Pose2D& pose, std::optional<Pose2D> ball,
-                           std::unique_ptr<api::Behaviour> behaviour) {
+                           std::optional<robot::BehaviourDef> behaviour) {
   match_ = std::make_unique<inprocess::InProcessMatch>(def_.world, seed);
   commanded_ = nullptr;
-  if (!behaviour) {
+  robot::RobotDef robot = def_.robot;
+  std::unique_ptr<api::Behaviour> driver;
+  if (behaviour) {
+    robot.behaviour = std::move(*behaviour);
+    driver = behaviour::make_behaviour(robot.behaviour.name, robot.behaviour.params);
+  } else {
+    robot.behaviour = {"commanded", {}, {}}; // what the Blackboard says drives it: the learner
     auto commanded = std::make_unique<Commanded>();
     commanded_ = commanded.get();
-    behaviour = std::move(commanded);
+    driver = std::move(commanded);
   }
-  robot::LocalisationModeDef localisation;
-  localisation.perfect = def_.perfect_localisation;
-  match_->add_robot(kRobot, def_.walk, std::move(behaviour), localisation);
+  match_->add_robot(std::move(robot), std::move(driver));
   match_->start();
   sim::World& world = match_->match().world();
   world.place_robot(0, pose);
@@ -70,9 +80,9 @@ void SingleRobotSim::step_behaviour() {
 Pose2D SingleRobotSim::pose() const { return match().match().world().robot(0).body; }
 sim::BallTruth SingleRobotSim::ball() const { return match().match().world().ball(); }
 const robot::WalkRequest& SingleRobotSim::walk_velocity() const {
-  return match().robot(kRobot).motion().walk().velocity();
+  return match().robot(def_.robot.id).motion().walk().velocity();
 }
-const api::Blackboard& SingleRobotSim::blackboard() const { return match().robot(kRobot).blackboard(); }
+const api::Blackboard& SingleRobotSim::blackboard() const { return match().robot(def_.robot.id).blackboard(); }
 int64_t SingleRobotSim::frame() const { return match().match().frame() - start_frame_; }
 double SingleRobotSim::time_s() const {
   const sim::Match& m = match().match();

@@ -24,11 +24,13 @@ namespace {
 using Pose = std::tuple<float, float, float>;
 
 learning::SingleRobotDef make_def(const std::string& world_config, const std::vector<std::string>& overrides,
-                                  const std::string& walk_config, bool perfect_localisation) {
+                                  const std::string& walk_config, const std::string& kick_config,
+                                  bool perfect_localisation) {
   learning::SingleRobotDef def;
   def.world = sim::load_world_config(world_config, overrides);
-  if (!walk_config.empty()) def.walk = robot::load_walk_def(walk_config);
-  def.perfect_localisation = perfect_localisation;
+  // No field file: the in-process match gives the robot the world's field, overrides and all.
+  def.robot = robot::load_robot_def({walk_config, kick_config, ""}, def.robot);
+  def.robot.localisation.perfect = perfect_localisation;
   return def;
 }
 
@@ -56,21 +58,22 @@ PYBIND11_MODULE(touchline_sim, m) {
 
   py::class_<learning::SingleRobotSim>(m, "SingleRobotSim")
       .def(py::init([](const std::string& world_config, const std::vector<std::string>& overrides,
-                       const std::string& walk_config, bool perfect_localisation) {
+                       const std::string& walk_config, bool perfect_localisation, const std::string& kick_config) {
              return std::make_unique<learning::SingleRobotSim>(
-                 make_def(world_config, overrides, walk_config, perfect_localisation));
+                 make_def(world_config, overrides, walk_config, kick_config, perfect_localisation));
            }), py::arg("world_config") = "", py::arg("overrides") = std::vector<std::string>{},
-           py::arg("walk_config") = "", py::arg("perfect_localisation") = true,
+           py::arg("walk_config") = "", py::arg("perfect_localisation") = true, py::arg("kick_config") = "",
            "world_config: an .ini like config/spl2020.ini ('' = defaults), overrides 'section.key=value'; "
-           "walk_config: a walk .ini ('' = the built-in walk). Bad config: ValueError, one line.")
+           "walk_config: a walk .ini ('' = the built-in walk); kick_config: a kick .ini like config/kick.ini "
+           "('' = the built-in kick and dribble). Bad config: ValueError, one line.")
       .def(
           "reset",
           [](learning::SingleRobotSim& sim, uint64_t seed, const Pose& pose, std::optional<std::tuple<float, float>> ball,
              std::optional<std::string> behaviour, const behaviour::Params& params) {
             std::optional<Pose2D> ball_pose;
             if (ball) ball_pose = Pose2D{std::get<0>(*ball), std::get<1>(*ball), 0};
-            std::unique_ptr<api::Behaviour> driver;
-            if (behaviour) driver = behaviour::make_behaviour(*behaviour, params);
+            std::optional<robot::BehaviourDef> driver;
+            if (behaviour) driver = robot::BehaviourDef{*behaviour, params, {}};
             sim.reset(seed, {std::get<0>(pose), std::get<1>(pose), std::get<2>(pose)}, ball_pose, std::move(driver));
           },
           py::arg("seed"), py::arg("pose"), py::arg("ball") = py::none(), py::arg("behaviour") = py::none(),
@@ -103,7 +106,7 @@ PYBIND11_MODULE(touchline_sim, m) {
       .def_property_readonly("time_s", &learning::SingleRobotSim::time_s, "Simulated seconds since reset.")
       .def("state_hash", &learning::SingleRobotSim::state_hash, "Equal for bit-identical worlds.")
       .def_property_readonly("walk_limits", [](const learning::SingleRobotSim& sim) {
-        const robot::WalkDef& w = sim.def().walk;
+        const robot::WalkDef& w = sim.def().robot.walk;
         return std::map<std::string, float>{{"max_forward_mm_s", w.max_forward_mm_s},
                                             {"max_backward_mm_s", w.max_backward_mm_s},
                                             {"max_left_mm_s", w.max_left_mm_s},

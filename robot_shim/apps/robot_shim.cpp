@@ -13,6 +13,7 @@
 #include <boost/program_options.hpp>
 #include <pybind11/embed.h>
 
+#include "touchline/apps/behaviour_factory.hpp"
 #include "touchline/behaviour/registry.hpp"
 #include "touchline/cli.hpp"
 #include "touchline/ini.hpp"
@@ -37,21 +38,6 @@ behaviour::Params parse_params(const std::vector<std::string>& assignments) {
     params[a.substr(0, eq)] = a.substr(eq + 1);
   }
   return params;
-}
-
-/// The module --behaviour names when it picks the Python behaviour ("py", "py:MODULE").
-std::optional<std::string> python_module(const std::string& behaviour) {
-  if (behaviour == "py") return std::string("behaviour");
-  if (behaviour.rfind("py:", 0) != 0) return std::nullopt;
-  if (behaviour.size() == 3) throw po::error("--behaviour py:MODULE needs a module name");
-  return behaviour.substr(3);
-}
-
-/// "NAME k=v k=v": what the Blackboard's behaviour.skill (and so every snapshot) records.
-std::string describe_behaviour(const std::string& name, const behaviour::Params& params) {
-  std::string text = name;
-  for (const auto& [key, value] : params) text += " " + key + "=" + value;
-  return text;
 }
 
 std::string behaviour_list() {
@@ -116,14 +102,14 @@ int stop_status() { return 128 + (g_stop_signal ? g_stop_signal : SIGINT); }
 } // namespace
 
 int main(int argc, char** argv) {
-  int team = -1, player = -1;
-  std::string behaviour_name = "stand", walk_config, kick_config, field_config, python_dir = TOUCHLINE_PYTHON_DIR,
-              data_dir = api::data_dir();
-  robot::LocalisationModeDef localisation;
+  // The robot as the command line describes it; load_robot_def reads the files it names.
+  robot::RobotDef def;
+  def.behaviour.python_dir = TOUCHLINE_PYTHON_DIR;
+  robot::RobotConfigFiles files;
+  std::string data_dir = api::data_dir();
   std::vector<std::string> param_args;
   std::string secret_file;
   transport::RobotNodeDef node;
-  robot::BehaviourTimingDef timing;
   int64_t tick_timeout_ms = python::PythonBehaviourDef{}.tick_timeout_us / 1000;
 
   po::options_description options(
@@ -131,24 +117,24 @@ int main(int argc, char** argv) {
       "Usage: robot_shim --team T --player N [options]\nOptions");
   options.add_options()
     ("help,h", "print this help and exit")
-    ("team", number_option("--team", &team, 0, 1, /*show_default=*/false)->required(), "team index, 0 or 1")
-    ("player", number_option("--player", &player, 1, kMaxTeamSize, /*show_default=*/false)->required(),
+    ("team", number_option("--team", &def.id.team, 0, 1, /*show_default=*/false)->required(), "team index, 0 or 1")
+    ("player", number_option("--player", &def.id.player, 1, kMaxTeamSize, /*show_default=*/false)->required(),
      "player number, 1..7 (and within the world's team size)")
-    ("behaviour", po::value(&behaviour_name)->default_value(behaviour_name),
+    ("behaviour", po::value(&def.behaviour.name)->default_value(def.behaviour.name),
      "the behaviour to run: a C++ one, or py / py:MODULE for Python (see the list below)")
     ("param", po::value(&param_args)->composing(), "a behaviour parameter, key=value (repeatable)")
-    ("python-dir", po::value(&python_dir)->default_value(python_dir),
+    ("python-dir", po::value(&def.behaviour.python_dir)->default_value(def.behaviour.python_dir),
      "the Python behaviour's folder: first on sys.path, its .py files reloaded when edited")
     ("data-dir", po::value(&data_dir)->default_value(data_dir),
      "the robot's data directory (learned policies, ...): C++ api::data_path(name) and Python "
      "robot.data_path(name) look there")
-    ("charge-cpu", po::bool_switch(&timing.charge_cpu),
+    ("charge-cpu", po::bool_switch(&def.timing.charge_cpu),
      "charge the behaviour's CPU time to simulated time: a tick using more than one frame "
      "(33.3 ms) of CPU makes the robot miss frames as on the robot (the last request stays in force)")
-    ("walk-config", po::value(&walk_config), "walk parameters file ([walk] section); default: the built-in walk")
-    ("kick-config", po::value(&kick_config), "kick and dribble parameters file ([kick], [dribble]); default: the built-in kick")
-    ("field-config", po::value(&field_config), "the world config whose [field] the robot knows (landmarks for localisation); default: SPL 2011")
-    ("perfect-localisation", po::bool_switch(&localisation.perfect), "the robot's pose from the truth instead of the filter (the ball still from the camera)")
+    ("walk-config", po::value(&files.walk), "walk parameters file ([walk] section); default: the built-in walk")
+    ("kick-config", po::value(&files.kick), "kick and dribble parameters file ([kick], [dribble]); default: the built-in kick")
+    ("field-config", po::value(&files.field), "the world config whose [field] the robot knows (landmarks for localisation); default: SPL 2011")
+    ("perfect-localisation", po::bool_switch(&def.localisation.perfect), "the robot's pose from the truth instead of the filter (the ball still from the camera)")
     ("lcm-url", po::value(&node.lcm_url)->default_value(node.lcm_url),
      "LCM provider URL (opened once at start: a URL LCM cannot open is a usage error)")
     ("secret-file", po::value(&secret_file),
@@ -166,8 +152,6 @@ int main(int argc, char** argv) {
 
   std::optional<pybind11::scoped_interpreter> interpreter; // only for py; outlives the behaviour
   std::unique_ptr<api::Behaviour> behaviour;
-  robot::WalkDef walk;
-  robot::KickDef kick;
   try {
     po::variables_map vm;
     po::store(po::command_line_parser(argc, argv).options(options).run(), vm);
@@ -177,32 +161,29 @@ int main(int argc, char** argv) {
     }
     po::notify(vm);
     node.key = transport::load_match_key(secret_file);
-    if (!walk_config.empty()) walk = robot::load_walk_def(walk_config);
-    if (!kick_config.empty()) kick = robot::load_kick_def(kick_config);
-    if (!field_config.empty()) localisation.filters.field = robot::localisation::load_field_map(field_config);
+    def.behaviour.params = parse_params(param_args);
+    try {
+      robot::python_module(def.behaviour); // "py:" names no module: a usage error
+    } catch (const ConfigError& e) {
+      throw po::error(std::string("--behaviour ") + e.what());
+    }
+    def = robot::load_robot_def(files, std::move(def));
     if (!std::filesystem::is_directory(data_dir)) throw po::error("--data-dir " + data_dir + " is not a directory");
     // Before the interpreter: the check redirects stderr for a moment, so no other thread may run.
     if (const auto problem = transport::lcm_url_problem(node.lcm_url))
       throw ConfigError("--lcm-url '" + node.lcm_url + "': cannot open LCM: " + *problem);
     api::set_data_dir(data_dir); // before the behaviour is made: it may load its data
     // From here on a stop signal must reach Python: a module may hang at import.
-    handle_stop_signals(team, player);
-    if (const auto module = python_module(behaviour_name)) {
+    handle_stop_signals(def.id.team, def.id.player);
+    python::PythonBehaviourDef python;
+    if (robot::python_module(def.behaviour)) {
       // Python's own signal handlers stay off: SIGINT/SIGTERM stop the shim (handle_stop_signals); no
       // program directory on sys.path: the behaviour's modules come from --python-dir alone.
       interpreter.emplace(/*init_signal_handlers=*/false, 0, nullptr, /*add_program_dir_to_path=*/false);
-      python::PythonBehaviourDef def;
-      def.directory = python_dir;
-      def.module = *module;
-      def.params = parse_params(param_args);
-      def.team = team;
-      def.player = player;
-      def.name = "robot_shim " + std::to_string(team) + "/" + std::to_string(player);
-      def.tick_timeout_us = tick_timeout_ms * 1000;
-      behaviour = std::make_unique<python::PythonBehaviour>(std::move(def));
-    } else {
-      behaviour = behaviour::make_behaviour(behaviour_name, parse_params(param_args));
+      python.name = "robot_shim " + std::to_string(def.id.team) + "/" + std::to_string(def.id.player);
+      python.tick_timeout_us = tick_timeout_ms * 1000;
     }
+    behaviour = apps::make_behaviour(def, std::move(python));
   } catch (const po::error& e) {
     std::cerr << "robot_shim: " << e.what() << " (see --help)\n";
     return kUsageError;
@@ -222,8 +203,7 @@ int main(int argc, char** argv) {
   }
 
   try {
-    robot::Robot robot({team, player}, walk, std::move(behaviour), timing, kick, localisation);
-    robot.set_behaviour_name(describe_behaviour(behaviour_name, parse_params(param_args)));
+    robot::Robot robot(std::move(def), std::move(behaviour));
     if (g_stop_signal) return stop_status(); // before run_robot, which starts afresh
     switch (transport::run_robot(robot, node, std::cerr)) {
       case transport::RobotExit::kMatchOver: return 0;

@@ -13,17 +13,24 @@ int64_t behaviour_frames_used(int64_t cpu_us) {
   return std::max<int64_t>(frames, 1);
 }
 
-Robot::Robot(RobotId id, const WalkDef& walk, std::unique_ptr<api::Behaviour> behaviour, BehaviourTimingDef timing,
-             const KickDef& kick, const LocalisationModeDef& localisation)
-    : id_(id), behaviour_(std::move(behaviour)), charge_cpu_(timing.charge_cpu),
-      behaviour_adapter_(*behaviour_, std::move(timing.cpu_clock)), motion_(walk, HeadDef{}, kick),
-      localisation_(localisation.filters, localisation.perfect) {
-  if (!behaviour_) throw std::invalid_argument("Robot needs a behaviour");
+namespace {
+/// Checked before the adapters bind to it.
+std::unique_ptr<api::Behaviour> required(std::unique_ptr<api::Behaviour> behaviour) {
+  if (!behaviour) throw std::invalid_argument("Robot needs a behaviour");
+  return behaviour;
+}
+} // namespace
+
+Robot::Robot(RobotDef def, std::unique_ptr<api::Behaviour> behaviour)
+    : def_(std::move(def)), behaviour_(required(std::move(behaviour))),
+      behaviour_adapter_(*behaviour_, def_.timing.cpu_clock), motion_(def_.walk, def_.head, def_.kick),
+      localisation_(def_.localisation.filters, def_.localisation.perfect) {
+  blackboard_.behaviour.skill = describe(def_.behaviour);
 }
 
 bool Robot::behaviour_due(int64_t frame) const {
   // A frame index going backwards is a new run of frames: nothing is owed from the old one.
-  return !charge_cpu_ || frame >= next_behaviour_frame_ || frame < last_behaviour_frame_;
+  return !def_.timing.charge_cpu || frame >= next_behaviour_frame_ || frame < last_behaviour_frame_;
 }
 
 void Robot::run_behaviour(int64_t frame) {
@@ -52,7 +59,7 @@ RobotAct Robot::step(const SenseFrame& frame, const RobotSense& sense) {
   }
 
   RobotAct act;
-  act.id = id_;
+  act.id = def_.id;
   act.frame = frame.frame;
   act.motion_ticks = frame.motion_ticks;
   for (int i = 0; i < frame.motion_ticks; ++i) {
@@ -65,7 +72,7 @@ RobotAct Robot::step(const SenseFrame& frame, const RobotSense& sense) {
   act.leds = blackboard_.behaviour.request.leds.chest;
   act.behaviour_cpu_us = stats_.ticked_last_step ? stats_.last_cpu_us : 0;
   const api::AbsCoord& believed = blackboard_.localisation.robotPos;
-  act.localised = to_world_frame({believed.x, believed.y, believed.theta}, id_.team);
+  act.localised = to_world_frame({believed.x, believed.y, believed.theta}, def_.id.team);
   const auto& message = blackboard_.behaviour.request.teamMessage;
   if (stats_.ticked_last_step && message.size() <= kMaxTeamMessageBytes) act.team_message = message;
   return act;

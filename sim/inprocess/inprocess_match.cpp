@@ -6,15 +6,18 @@ namespace touchline::inprocess {
 
 namespace {
 constexpr int64_t kInstance = 1; // one process: every robot is its own only claimant
-}
 
-robot::Robot& InProcessMatch::add_robot(RobotId id, const robot::WalkDef& walk,
-                                        std::unique_ptr<api::Behaviour> behaviour,
-                                        const robot::LocalisationModeDef& localisation) {
-  const sim::JoinReply reply = match_.join(id, kInstance + static_cast<int64_t>(robots_.size()), 0);
+/// The few dimensions of the world's field that the robot's landmark map needs.
+robot::localisation::FieldMap field_map(const sim::FieldDef& field) {
+  return {field.length_mm, field.width_mm, field.goal_width_mm, field.penalty_mark_distance_mm};
+}
+} // namespace
+
+robot::Robot& InProcessMatch::add_robot(robot::RobotDef def, std::unique_ptr<api::Behaviour> behaviour) {
+  const sim::JoinReply reply = match_.join(def.id, kInstance + static_cast<int64_t>(robots_.size()), 0);
   if (!reply.accepted) throw std::invalid_argument(reply.reason);
-  robots_.push_back(std::make_unique<robot::Robot>(id, walk, std::move(behaviour), robot::BehaviourTimingDef{},
-                                                    robot::KickDef{}, localisation));
+  def.localisation.filters.field = field_map(match_.config().field);
+  robots_.push_back(std::make_unique<robot::Robot>(std::move(def), std::move(behaviour)));
   return *robots_.back();
 }
 

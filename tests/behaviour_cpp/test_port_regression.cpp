@@ -23,7 +23,7 @@
 #include <gtest/gtest.h>
 #include <lcm/lcm-cpp.hpp>
 
-#include "touchline/behaviour/registry.hpp"
+#include "touchline/apps/behaviour_factory.hpp"
 #include "touchline/blackboard_snapshot_t.hpp"
 #include "touchline/lcm/snapshot.hpp"
 #include "touchline/python/python_behaviour.hpp"
@@ -160,16 +160,18 @@ std::unique_ptr<behaviour::test::TestDataDir> PortRegression::testData_;
 TEST_P(PortRegression, CppPortAgreesWithPythonOnEveryFrame) {
   const RobotRun& run = corpus()[GetParam()];
   auto params = params_of(run.behaviour);
-  python::PythonBehaviourDef def;
-  def.directory = TOUCHLINE_BEHAVIOUR_PY;
-  def.params = params;
-  def.team = run.frames.front().team;
-  def.player = run.frames.front().player;
-  def.reload_check_interval_us = int64_t{1} << 60; // the files do not change during the test
-  python::PythonBehaviour python(def);
-  const std::string skill = params.count("skill") ? params["skill"] : "GoToBall";
-  params.erase("skill");
-  auto cpp = behaviour::make_behaviour(skill, params);
+  // The recorded robot as robot_shim made it (--behaviour py --param skill=...), and its C++ port.
+  robot::RobotDef recorded;
+  recorded.id = {run.frames.front().team, run.frames.front().player};
+  recorded.behaviour = {"py", params, TOUCHLINE_BEHAVIOUR_PY};
+  python::PythonBehaviourDef runtime;
+  runtime.reload_check_interval_us = int64_t{1} << 60; // the files do not change during the test
+  auto python_owner = apps::make_behaviour(recorded, runtime);
+  auto& python = dynamic_cast<python::PythonBehaviour&>(*python_owner);
+  robot::RobotDef port = recorded;
+  port.behaviour.name = params.count("skill") ? params["skill"] : "GoToBall";
+  port.behaviour.params.erase("skill");
+  auto cpp = apps::make_behaviour(port);
 
   int failures = 0;
   for (const blackboard_snapshot_t& frame : run.frames) {

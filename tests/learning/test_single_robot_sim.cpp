@@ -1,11 +1,11 @@
 #include "touchline/learning/single_robot_sim.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include <gtest/gtest.h>
 
-#include "touchline/behaviour/registry.hpp"
 
 using namespace touchline;
 using learning::SingleRobotSim;
@@ -54,7 +54,7 @@ TEST(SingleRobotSim, TheWalkClampsCommandsToItsLimits) {
   SingleRobotSim sim = default_sim();
   sim.reset(1, {0, 0, 0});
   walk_for(sim, 2, api::ActionCommand::walk(0, 0, 9));
-  EXPECT_NEAR(sim.walk_velocity().turn_rad_s, learning::SingleRobotDef{}.walk.max_turn_rad_s, 1e-5);
+  EXPECT_NEAR(sim.walk_velocity().turn_rad_s, learning::SingleRobotDef{}.robot.walk.max_turn_rad_s, 1e-5);
 }
 
 TEST(SingleRobotSim, TheSameSeedAndCommandsGiveTheSameWorldBitForBit) {
@@ -75,7 +75,7 @@ TEST(SingleRobotSim, TheSameSeedAndCommandsGiveTheSameWorldBitForBit) {
 
 TEST(SingleRobotSim, ABehaviourCanDriveTheRobotInstead) {
   SingleRobotSim sim = default_sim();
-  sim.reset(1, {0, 0, 0}, std::nullopt, behaviour::make_behaviour("goto", {{"x", "1000"}, {"y", "500"}, {"theta", "1"}}));
+  sim.reset(1, {0, 0, 0}, std::nullopt, robot::BehaviourDef{"goto", {{"x", "1000"}, {"y", "500"}, {"theta", "1"}}, {}});
   while (sim.time_s() < 12) sim.step_behaviour();
   EXPECT_NEAR(sim.pose().x_mm, 1000, 100);
   EXPECT_NEAR(sim.pose().y_mm, 500, 100);
@@ -108,4 +108,20 @@ TEST(SingleRobotSim, TheRefereeIsOffAndABadConfigIsRefused) {
   EXPECT_FALSE(sim.def().world.rules.referee);
   def.world.physics.substeps = 0;
   EXPECT_THROW(SingleRobotSim{def}, ConfigError);
+}
+
+TEST(SingleRobotSim, TheRobotKicksWithItsDefsKick) {
+  // kick.ini reaches the learner's robot: a harder strike sends the ball further.
+  auto ball_after_a_kick = [](float peak_speed_mm_s) {
+    learning::SingleRobotDef def;
+    def.robot.kick.kick.peak_speed_mm_s = peak_speed_mm_s;
+    SingleRobotSim sim(def);
+    sim.reset(1, {0, 0, 0}, Pose2D{300, 0, 0}, robot::BehaviourDef{"LineUpAndKick", {{"power", "1"}}, {}});
+    for (int f = 0; f < 150; ++f) sim.step_behaviour(); // 5 s: line up, kick, the ball rolls
+    return sim.ball().x_mm;
+  };
+  const float soft = ball_after_a_kick(800), hard = ball_after_a_kick(2400);
+  std::printf("ball after 5 s: %.0f mm (peak 800 mm/s), %.0f mm (2400 mm/s)\n", soft, hard);
+  EXPECT_GT(soft, 300);
+  EXPECT_GT(hard, soft + 300);
 }

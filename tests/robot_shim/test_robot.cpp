@@ -28,6 +28,14 @@ class Probe : public Behaviour {
   int ticks = 0;
 };
 
+/// A robot running a Probe.
+robot::RobotDef robot_def(RobotId id) {
+  robot::RobotDef def;
+  def.id = id;
+  def.behaviour.name = "probe";
+  return def;
+}
+
 SenseFrame frame_with(RobotSense sense, int64_t frame_index) {
   SenseFrame frame;
   frame.frame = frame_index;
@@ -42,7 +50,7 @@ SenseFrame frame_with(RobotSense sense, int64_t frame_index) {
 TEST(Robot, OneFrameRunsTheBehaviourOnceAndTheFramesMotionTicks) {
   auto probe_owner = std::make_unique<Probe>();
   Probe& probe = *probe_owner;
-  robot::Robot robot({0, 3}, robot::WalkDef{}, std::move(probe_owner));
+  robot::Robot robot(robot_def({0, 3}), std::move(probe_owner));
   RobotSense sense;
   sense.id = {0, 3};
   sense.truth = {1000, 0, kPi / 2};
@@ -68,7 +76,7 @@ TEST(Robot, OneFrameRunsTheBehaviourOnceAndTheFramesMotionTicks) {
 }
 
 TEST(Robot, WalkingRobotReportsFootMotionAndOdometry) {
-  robot::Robot robot({1, 1}, robot::WalkDef{}, std::make_unique<Probe>());
+  robot::Robot robot(robot_def({1, 1}), std::make_unique<Probe>());
   RobotSense sense;
   sense.id = {1, 1};
   float moved = 0;
@@ -86,9 +94,9 @@ TEST(Robot, TeamOneSeesTheFieldFromItsOwnSide) {
   // +x towards the opponent goal for both teams: the world's frame is team 0's.
   auto probe_owner = std::make_unique<Probe>();
   Probe& probe = *probe_owner;
-  robot::LocalisationModeDef perfect;
-  perfect.perfect = true;
-  robot::Robot robot({1, 2}, robot::WalkDef{}, std::move(probe_owner), {}, {}, perfect);
+  robot::RobotDef def = robot_def({1, 2});
+  def.localisation.perfect = true;
+  robot::Robot robot(def, std::move(probe_owner));
   RobotSense sense;
   sense.id = {1, 2};
   sense.truth = {1000, 300, kPi}; // on team 1's own half, facing the goal it attacks
@@ -102,7 +110,7 @@ TEST(Robot, TeamOneSeesTheFieldFromItsOwnSide) {
 }
 
 TEST(Robot, ReceiverKeepsTheLatestMessageOfEachTeammate) {
-  robot::Robot robot({0, 1}, robot::WalkDef{}, std::make_unique<Probe>());
+  robot::Robot robot(robot_def({0, 1}), std::make_unique<Probe>());
   RobotSense sense;
   sense.id = {0, 1};
   sense.messages = {{3, 100, {7}}, {2, 50, {5}}, {3, 200, {8}}};
@@ -115,4 +123,24 @@ TEST(Robot, ReceiverKeepsTheLatestMessageOfEachTeammate) {
   EXPECT_EQ(messages[0].data, std::vector<uint8_t>{5});
   EXPECT_EQ(messages[1].playerNumber, 3);
   EXPECT_EQ(messages[1].data, std::vector<uint8_t>{8});
+}
+
+TEST(Robot, EverythingComesFromItsDef) {
+  robot::RobotDef def = robot_def({1, 4});
+  def.behaviour = {"goto", {{"y", "-5"}, {"x", "12"}}, {}};
+  def.walk.max_forward_mm_s = 123;
+  def.kick.kick.peak_speed_mm_s = 2345;
+  def.kick.dribble.recover_s = 0.75f;
+  def.head.max_yaw_rad = 1.25f;
+  robot::Robot robot(def, std::make_unique<Probe>());
+  EXPECT_EQ(robot.id(), (RobotId{1, 4}));
+  EXPECT_EQ(robot.blackboard().behaviour.skill, "goto x=12 y=-5"); // what snapshots record as running
+  EXPECT_FLOAT_EQ(robot.motion().walk().def().max_forward_mm_s, 123);
+  EXPECT_FLOAT_EQ(robot.motion().kick().def().kick.peak_speed_mm_s, 2345);
+  EXPECT_FLOAT_EQ(robot.motion().kick().def().dribble.recover_s, 0.75f);
+  EXPECT_FLOAT_EQ(robot.def().head.max_yaw_rad, 1.25f);
+}
+
+TEST(Robot, NeedsABehaviour) {
+  EXPECT_THROW(robot::Robot(robot_def({0, 1}), nullptr), std::invalid_argument);
 }

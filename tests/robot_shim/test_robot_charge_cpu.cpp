@@ -51,10 +51,10 @@ Outcome play(int64_t cost_us, bool charge_cpu, int frames) {
   int64_t cpu_us = 0;
   auto owned = std::make_unique<Costly>(cpu_us, cost_us);
   Costly& behaviour = *owned;
-  robot::BehaviourTimingDef timing;
-  timing.charge_cpu = charge_cpu;
-  timing.cpu_clock = [&cpu_us] { return cpu_us; };
-  robot::Robot robot({0, 1}, robot::WalkDef{}, std::move(owned), timing);
+  robot::RobotDef def;
+  def.timing.charge_cpu = charge_cpu;
+  def.timing.cpu_clock = [&cpu_us] { return cpu_us; };
+  robot::Robot robot(def, std::move(owned));
   Outcome out;
   for (int64_t f = 0; f < frames; ++f) {
     const SenseFrame frame = frame_for_robot_0_1(f);
@@ -112,10 +112,10 @@ TEST(ChargeCpu, FrameIndicesThatSkipAheadDoNotOweMore) {
   int64_t cpu_us = 0;
   auto owned = std::make_unique<Costly>(cpu_us, 70000);
   Costly& behaviour = *owned;
-  robot::BehaviourTimingDef timing;
-  timing.charge_cpu = true;
-  timing.cpu_clock = [&cpu_us] { return cpu_us; };
-  robot::Robot robot({0, 1}, robot::WalkDef{}, std::move(owned), timing);
+  robot::RobotDef def;
+  def.timing.charge_cpu = true;
+  def.timing.cpu_clock = [&cpu_us] { return cpu_us; };
+  robot::Robot robot(def, std::move(owned));
   for (int64_t f : {0, 1, 50, 51, 52, 53}) {
     const SenseFrame frame = frame_for_robot_0_1(f);
     robot.step(frame, frame.robots[0]);

@@ -119,7 +119,10 @@ class PythonRobot : public testing::Test {
   void start(PythonBehaviourDef d) {
     auto owned = std::make_unique<PythonBehaviour>(std::move(d));
     behaviour_ = owned.get();
-    robot_ = std::make_unique<robot::Robot>(RobotId{0, 2}, robot::WalkDef{}, std::move(owned));
+    robot::RobotDef robot;
+    robot.id = {0, 2};
+    robot.behaviour = {"py", {}, dir_.string()};
+    robot_ = std::make_unique<robot::Robot>(robot, std::move(owned));
   }
   void start() { start(def()); }
 

@@ -38,9 +38,10 @@ std::unique_ptr<inprocess::InProcessMatch> four_a_side(float duration_s, uint64_
   config.match.duration_s = duration_s;
   auto match = std::make_unique<inprocess::InProcessMatch>(config, seed);
   for (const Target& t : targets()) {
-    auto behaviour = behaviour::make_behaviour(
-        "goto", {{"x", std::to_string(t.x)}, {"y", std::to_string(t.y)}, {"theta", std::to_string(t.theta)}});
-    match->add_robot(t.id, robot::WalkDef{}, std::move(behaviour));
+    robot::RobotDef def;
+    def.id = t.id;
+    def.behaviour = {"goto", {{"x", std::to_string(t.x)}, {"y", std::to_string(t.y)}, {"theta", std::to_string(t.theta)}}, {}};
+    match->add_robot(def, behaviour::make_behaviour(def.behaviour.name, def.behaviour.params));
   }
   match->start();
   return match;
@@ -91,4 +92,26 @@ TEST(InProcessMatch, GoldenHashOfAFiveSecondFourASideMatch) {
   const uint64_t hash = match->match().world().state_hash();
   if (std::getenv("TOUCHLINE_PRINT_GOLDEN")) std::cout << "golden hash: 0x" << std::hex << hash << "ull" << std::endl;
   EXPECT_EQ(hash, kGolden) << std::hex << "got 0x" << hash;
+}
+
+TEST(InProcessMatch, ARobotKnowsTheFieldItPlaysOn) {
+  // Its landmark map is the match's [field] (as robot_shim's --field-config is the
+  // world's config), not the SPL 2011 map a default RobotDef carries.
+  sim::WorldConfig config;
+  config.field.length_mm = 9000;
+  config.field.width_mm = 6000;
+  config.field.goal_width_mm = 1500;
+  config.field.penalty_mark_distance_mm = 1300;
+  inprocess::InProcessMatch match(config);
+  robot::RobotDef def;
+  def.id = {1, 3};
+  def.kick.kick.peak_speed_mm_s = 2000; // and the rest of the def is the robot's
+  const robot::Robot& robot = match.add_robot(def, behaviour::make_behaviour("stand", {}));
+  const auto& field = robot.def().localisation.filters.field;
+  EXPECT_FLOAT_EQ(field.length_mm, 9000);
+  EXPECT_FLOAT_EQ(field.width_mm, 6000);
+  EXPECT_FLOAT_EQ(field.goal_width_mm, 1500);
+  EXPECT_FLOAT_EQ(field.penalty_mark_distance_mm, 1300);
+  EXPECT_EQ(robot.id(), (RobotId{1, 3}));
+  EXPECT_FLOAT_EQ(robot.motion().kick().def().kick.peak_speed_mm_s, 2000);
 }

@@ -87,7 +87,10 @@ Outcome play(const Scene& scene) {
   kick.bend = scene.bend;
   kick.foot = scene.foot;
   const RobotId id{0, 1};
-  match.add_robot(id, robot::WalkDef{}, std::make_unique<KickOnce>(kick, scene.walk_after));
+  robot::RobotDef def;
+  def.id = id;
+  def.behaviour.name = "KickOnce";
+  match.add_robot(def, std::make_unique<KickOnce>(kick, scene.walk_after));
   match.start();
 
   sim::World& world = match.match().world();

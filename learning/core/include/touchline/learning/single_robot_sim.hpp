@@ -13,10 +13,13 @@
 
 namespace touchline::learning {
 
+/// The learner's robot unless told otherwise: player 1 of team 0 with the built-in walk
+/// and kick, its Blackboard pose the true pose (learning sees the truth).
+robot::RobotDef default_learning_robot();
+
 struct SingleRobotDef {
-  sim::WorldConfig world;            ///< field, physics, camera (the referee is switched off)
-  robot::WalkDef walk;               ///< the robot's walk (config/walk.ini)
-  bool perfect_localisation = true;  ///< the Blackboard pose is the true pose (learning sees the truth)
+  sim::WorldConfig world;                        ///< field, physics, camera (the referee is switched off)
+  robot::RobotDef robot = default_learning_robot(); ///< walk, kick, localisation (its field: world's); player 1
 };
 
 /// Where the ball goes when a reset names none: a field corner, out of a walking robot's way.
@@ -29,10 +32,11 @@ class SingleRobotSim {
 
   /// A new episode: a fresh match seeded with `seed` (camera noise), the robot standing at
   /// `pose` (field frame, mm, rad) with the walk at rest, the ball at `ball` (x, y; theta
-  /// unused) or the default spot. `behaviour` drives the robot from now on; null: the
-  /// command given to step() does.
+  /// unused) or the default spot. The C++ behaviour `behaviour` names (behaviour_cpp's
+  /// registry) drives the robot from now on; none: the command given to step() does.
+  /// Throws behaviour::BehaviourError for an unknown behaviour or a bad parameter.
   void reset(uint64_t seed, const Pose2D& pose, std::optional<Pose2D> ball = std::nullopt,
-             std::unique_ptr<api::Behaviour> behaviour = nullptr);
+             std::optional<robot::BehaviourDef> behaviour = std::nullopt);
 
   /// One camera frame with the robot executing `body` (robot API units: mm/s, rad/s).
   /// std::logic_error if a behaviour drives the robot or reset() was never called.

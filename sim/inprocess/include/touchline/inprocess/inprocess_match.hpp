@@ -14,9 +14,12 @@ class InProcessMatch {
  public:
   explicit InProcessMatch(const sim::WorldConfig& config, uint64_t seed = 1) : match_(config, seed) {}
 
-  /// Adds a robot before start(). Throws std::invalid_argument if the roster refuses it.
-  robot::Robot& add_robot(RobotId id, const robot::WalkDef& walk, std::unique_ptr<api::Behaviour> behaviour,
-                          const robot::LocalisationModeDef& localisation = {});
+  /// Adds the robot `def` describes (def.id its team and number), running `behaviour`
+  /// (made by the caller from def.behaviour), before start(). The robot knows the field it
+  /// plays on: its localisation's map is this match's [field], whatever def says, as the
+  /// launcher gives every robot_shim the world's config as --field-config. Throws
+  /// std::invalid_argument if the roster refuses it.
+  robot::Robot& add_robot(robot::RobotDef def, std::unique_ptr<api::Behaviour> behaviour);
   void start() { match_.start(); }
   /// One camera frame: every robot senses, answers, and the world steps.
   void step_frame();
