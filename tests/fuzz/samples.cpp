@@ -101,6 +101,16 @@ std::vector<game_state_t> samples(Tag<game_state_t>) {
   return {g};
 }
 
+std::vector<match_config_t> samples(Tag<match_config_t>) {
+  match_config_t m{};
+  m.types_version = match_config_t::TYPES_VERSION;
+  m.team_size = 4;
+  m.field_length_mm = 9000;
+  m.field_width_mm = 6000;
+  m.ball_diameter_mm = 100;
+  return {m};
+}
+
 std::vector<join_t> samples(Tag<join_t>) { return {join_t{0, 1, 3, 424242, 1000}}; }
 
 std::vector<join_reply_t> samples(Tag<join_reply_t>) {

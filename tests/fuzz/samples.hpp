@@ -20,6 +20,7 @@ std::vector<game_state_t> samples(Tag<game_state_t>);
 std::vector<head_request_t> samples(Tag<head_request_t>);
 std::vector<join_reply_t> samples(Tag<join_reply_t>);
 std::vector<join_t> samples(Tag<join_t>);
+std::vector<match_config_t> samples(Tag<match_config_t>);
 std::vector<match_event_t> samples(Tag<match_event_t>);
 std::vector<observation_t> samples(Tag<observation_t>);
 std::vector<pose2d_t> samples(Tag<pose2d_t>);
