@@ -110,7 +110,11 @@ int main(int argc, char** argv) {
   std::vector<std::string> param_args;
   std::string secret_file;
   transport::RobotNodeDef node;
-  int64_t tick_timeout_ms = python::PythonBehaviourDef{}.tick_timeout_us / 1000;
+  // Far above sim_world's 1000 ms robot timeout, so a slow but finishing tick is the world's
+  // to judge; and above what a loaded machine takes to load a large first tick (a 4 MB
+  // learned policy took over 2 s with the sanitizer build beside it). The bound is for code
+  // that hangs.
+  int64_t tick_timeout_ms = 10000;
 
   po::options_description options(
       "robot_shim: runs one robot's code in a sim_world match over LCM.\n"

@@ -70,9 +70,9 @@ struct PythonBehaviourDef {
   int64_t reload_check_interval_us = 250000; ///< wall time between looks at the files; 0: every tick
   std::function<int64_t()> wall_clock_us;    ///< steady wall clock, microseconds; empty: std::chrono::steady_clock
   /// Wall time Python may run within one tick() (or the first import) before it is
-  /// interrupted; 0: never. More than sim_world's 1000 ms robot timeout by default, so a
-  /// slow but finishing tick is the world's to judge; the bound is for code that hangs.
-  int64_t tick_timeout_us = 2000000;
+  /// interrupted; 0: never (the default: wall time must not decide what a replay or a test
+  /// computes). robot_shim sets it (--tick-timeout-ms) to catch code that hangs.
+  int64_t tick_timeout_us = 0;
 };
 
 class PythonBehaviour : public api::Behaviour {
