@@ -2,14 +2,12 @@
 
 #include <algorithm>
 
+#include "approach.hpp"
+
 namespace touchline::robot {
 
 namespace {
 constexpr float kTickS = kMotionTickUs * 1e-6f;
-
-float approach(float current, float target, float max_step) {
-  return current + std::clamp(target - current, -max_step, max_step);
-}
 
 bool is_kick(api::ActionCommand::ActionType type) {
   return type == api::ActionCommand::ActionType::KICK || type == api::ActionCommand::ActionType::DRIBBLE;

@@ -5,6 +5,8 @@
 
 #include "touchline/angles.hpp"
 
+#include "approach.hpp"
+
 namespace touchline::robot {
 
 namespace {
@@ -44,10 +46,6 @@ WalkRequest clamp_to_limits(const WalkRequest& request, const WalkDef& def) {
                      def.max_forward_mm_s),
           std::clamp(finite_or_zero(request.left_mm_s), -def.max_left_mm_s, def.max_left_mm_s),
           std::clamp(finite_or_zero(request.turn_rad_s), -def.max_turn_rad_s, def.max_turn_rad_s)};
-}
-
-float approach(float current, float target, float max_change) {
-  return current + std::clamp(target - current, -max_change, max_change);
 }
 
 /// One tick of the acceleration limits: each axis moves towards `target` independently.
