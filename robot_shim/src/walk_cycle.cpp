@@ -24,11 +24,6 @@ Pose2D compose(const Pose2D& base, float dx_mm, float dy_mm, float dtheta_rad) {
           normalise_angle(base.theta_rad + dtheta_rad)};
 }
 
-/// Circular mean of two headings: the bisector of the shorter arc between them.
-float mean_heading(float a_rad, float b_rad) {
-  return normalise_angle(a_rad + 0.5f * normalise_angle(b_rad - a_rad));
-}
-
 Pose2D body_of(const FeetPose& feet) {
   return {0.5f * (feet.left.x_mm + feet.right.x_mm), 0.5f * (feet.left.y_mm + feet.right.y_mm),
           mean_heading(feet.left.theta_rad, feet.right.theta_rad)};
