@@ -34,7 +34,7 @@ void MotionAdapter::tick_head(const api::ActionCommand::Head& request) {
   pitch_ = approach(pitch_, pitch, step * std::clamp(request.pitchSpeed, 0.01f, 1.f));
 }
 
-EffectorTick MotionAdapter::tick(api::Blackboard& blackboard) {
+TickMotion MotionAdapter::tick(api::Blackboard& blackboard) {
   const api::ActionCommand::All& request = blackboard.behaviour.request;
   tick_head(request.head);
 
@@ -51,7 +51,7 @@ EffectorTick MotionAdapter::tick(api::Blackboard& blackboard) {
     motion.active = request.body;
     motion.kickPhase = static_cast<int>(KickPhase::kNone);
   }
-  EffectorTick out;
+  TickMotion out;
   feet_motion(feet_, after, out.left, out.right);
   feet_ = after;
 
