@@ -17,6 +17,9 @@ import math
 import sys
 from pathlib import Path
 
+sys.path.append(str(Path(__file__).resolve().parents[1] / "behaviour_py"))
+from skills.tile_policy import policyText  # noqa: E402 (the format's one writer)
+
 TILINGS = 4
 TILES = (10, 16, 16)            # distance (log), bearing, heading error
 DISTANCE_SCALE_MM = 100.0
@@ -69,14 +72,8 @@ def policy_text() -> str:
                 for ih in range(tiles_h):
                     state = cell_centre(k, iu, ib, ih)
                     weights += [score(*state, action) / TILINGS for action in ACTIONS]
-    lines = ["touchline-policy 1", "# synthetic: one-step lookahead at the cell centres (tools/synthetic_policy.py)",
-             "features polar-log", f"distance_scale_mm {DISTANCE_SCALE_MM:.9g}", f"max_distance_mm {MAX_DISTANCE_MM:.9g}",
-             f"tilings {TILINGS}", "tiles %d %d %d" % TILES, f"success_distance_mm {SUCCESS_DISTANCE_MM:.9g}",
-             f"success_heading_rad {SUCCESS_HEADING_RAD:.9g}", f"actions {len(ACTIONS)}"]
-    lines += ["action %.9g %.9g %.9g" % action for action in ACTIONS]
-    lines.append(f"weights {len(weights)}")
-    lines += [" ".join("%.9g" % w for w in weights[i:i + 8]) for i in range(0, len(weights), 8)]
-    return "\n".join(lines) + "\n"
+    return policyText(DISTANCE_SCALE_MM, MAX_DISTANCE_MM, TILINGS, TILES, SUCCESS_DISTANCE_MM, SUCCESS_HEADING_RAD,
+                      ACTIONS, weights, ["synthetic: one-step lookahead at the cell centres (tools/synthetic_policy.py)"])
 
 
 def write_policy(path: Path) -> None:

@@ -109,7 +109,7 @@ const std::vector<Entry>& entries() {
       "walker (hand: GoToPose walks to the ball; learned: the learned policy does), policy (with walker=learned: its "
       "file in the data directory, default policies/go_to_pose.policy)";
   static const std::vector<Entry> all = {
-      {"stand", "stands still", [](ParamReader&) { return std::make_unique<Stand>(); }},
+      {"stand", "stands still", [](ParamReader&) { return std::make_unique<skills::Stand>(); }},
       {"walk", "walks at a constant velocity: forward (mm/s), left (mm/s), turn (rad/s)",
        [](ParamReader& p) {
          const float forward = p.number("forward", 0), left = p.number("left", 0), turn = p.number("turn", 0);

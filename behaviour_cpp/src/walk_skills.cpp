@@ -7,10 +7,6 @@ namespace touchline::behaviour {
 
 using namespace api;
 
-ActionCommand::All Stand::tick(const Blackboard&) {
-  return ActionCommand::All{};
-}
-
 ActionCommand::All ConstantWalk::tick(const Blackboard&) {
   ActionCommand::All all;
   all.body = ActionCommand::walk(forward_, left_, turn_);

@@ -194,6 +194,25 @@ def parsePolicy(text, name):
     return TilePolicy(name, fields, actions, _weights(name, tokens))
 
 
+def policyText(distanceScale, maxDistance, tilings, tiles, successDistance, successHeading, actions, weights,
+               comments=()):
+    """The text of a policy file (format v1) holding these fields, actions [(forward, left,
+    turn)] and weights (in the format's order), with `comments` as '#' lines after the
+    magic line: the one writer of the format (training, tools/synthetic_policy.py and the
+    tests write through it; the robots only read). Numbers as %.9g: a float32 weight
+    reads back to the same float32."""
+    lines = ["%s %d" % (POLICY_MAGIC, POLICY_VERSION)]
+    lines += ["# %s" % comment for comment in comments]
+    lines += ["features %s" % FEATURES_POLAR_LOG, "distance_scale_mm %.9g" % distanceScale,
+              "max_distance_mm %.9g" % maxDistance, "tilings %d" % tilings, "tiles %d %d %d" % tuple(tiles),
+              "success_distance_mm %.9g" % successDistance, "success_heading_rad %.9g" % successHeading,
+              "actions %d" % len(actions)]
+    lines += ["action %.9g %.9g %.9g" % tuple(action) for action in actions]
+    lines.append("weights %d" % len(weights))
+    lines += [" ".join("%.9g" % w for w in weights[row:row + 8]) for row in range(0, len(weights), 8)]
+    return "\n".join(lines) + "\n"
+
+
 def loadPolicy(path):
     """The TilePolicy in the file `path`. Raises PolicyError (a ValueError)."""
     try:

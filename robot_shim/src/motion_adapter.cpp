@@ -2,14 +2,12 @@
 
 #include <algorithm>
 
+#include "approach.hpp"
+
 namespace touchline::robot {
 
 namespace {
 constexpr float kTickS = kMotionTickUs * 1e-6f;
-
-float approach(float current, float target, float max_step) {
-  return current + std::clamp(target - current, -max_step, max_step);
-}
 
 bool is_kick(api::ActionCommand::ActionType type) {
   return type == api::ActionCommand::ActionType::KICK || type == api::ActionCommand::ActionType::DRIBBLE;
@@ -36,7 +34,7 @@ void MotionAdapter::tick_head(const api::ActionCommand::Head& request) {
   pitch_ = approach(pitch_, pitch, step * std::clamp(request.pitchSpeed, 0.01f, 1.f));
 }
 
-EffectorTick MotionAdapter::tick(api::Blackboard& blackboard) {
+TickMotion MotionAdapter::tick(api::Blackboard& blackboard) {
   const api::ActionCommand::All& request = blackboard.behaviour.request;
   tick_head(request.head);
 
@@ -53,7 +51,7 @@ EffectorTick MotionAdapter::tick(api::Blackboard& blackboard) {
     motion.active = request.body;
     motion.kickPhase = static_cast<int>(KickPhase::kNone);
   }
-  EffectorTick out;
+  TickMotion out;
   feet_motion(feet_, after, out.left, out.right);
   feet_ = after;
 

@@ -62,11 +62,7 @@ RobotAct Robot::step(const SenseFrame& frame, const RobotSense& sense) {
   act.id = def_.id;
   act.frame = frame.frame;
   act.motion_ticks = frame.motion_ticks;
-  for (int i = 0; i < frame.motion_ticks; ++i) {
-    const EffectorTick tick = motion_.tick(blackboard_);
-    act.left[i] = tick.left;
-    act.right[i] = tick.right;
-  }
+  for (int i = 0; i < frame.motion_ticks; ++i) act.ticks[static_cast<size_t>(i)] = motion_.tick(blackboard_);
   act.head_yaw_rad = motion_.head_yaw();
   act.head_pitch_rad = motion_.head_pitch();
   act.leds = blackboard_.behaviour.request.leds.chest;

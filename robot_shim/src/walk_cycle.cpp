@@ -5,6 +5,8 @@
 
 #include "touchline/angles.hpp"
 
+#include "approach.hpp"
+
 namespace touchline::robot {
 
 namespace {
@@ -20,11 +22,6 @@ Pose2D compose(const Pose2D& base, float dx_mm, float dy_mm, float dtheta_rad) {
   const float c = std::cos(base.theta_rad), s = std::sin(base.theta_rad);
   return {base.x_mm + c * dx_mm - s * dy_mm, base.y_mm + s * dx_mm + c * dy_mm,
           normalise_angle(base.theta_rad + dtheta_rad)};
-}
-
-/// Circular mean of two headings: the bisector of the shorter arc between them.
-float mean_heading(float a_rad, float b_rad) {
-  return normalise_angle(a_rad + 0.5f * normalise_angle(b_rad - a_rad));
 }
 
 Pose2D body_of(const FeetPose& feet) {
@@ -44,10 +41,6 @@ WalkRequest clamp_to_limits(const WalkRequest& request, const WalkDef& def) {
                      def.max_forward_mm_s),
           std::clamp(finite_or_zero(request.left_mm_s), -def.max_left_mm_s, def.max_left_mm_s),
           std::clamp(finite_or_zero(request.turn_rad_s), -def.max_turn_rad_s, def.max_turn_rad_s)};
-}
-
-float approach(float current, float target, float max_change) {
-  return current + std::clamp(target - current, -max_change, max_change);
 }
 
 /// One tick of the acceleration limits: each axis moves towards `target` independently.

@@ -214,8 +214,8 @@ act_t to_lcm(const RobotAct& act, int64_t utime, int64_t instance) {
   m.instance = instance;
   m.motion_ticks = static_cast<int8_t>(act.motion_ticks);
   for (int i = 0; i < act.motion_ticks; ++i) {
-    m.left.push_back(to_lcm(act.left[static_cast<size_t>(i)]));
-    m.right.push_back(to_lcm(act.right[static_cast<size_t>(i)]));
+    m.left.push_back(to_lcm(act.ticks[static_cast<size_t>(i)].left));
+    m.right.push_back(to_lcm(act.ticks[static_cast<size_t>(i)].right));
   }
   m.head_yaw_rad = act.head_yaw_rad;
   m.head_pitch_rad = act.head_pitch_rad;
@@ -240,10 +240,8 @@ RobotAct from_lcm(const act_t& m) {
   act.id = {m.team, m.player};
   act.frame = m.frame;
   act.motion_ticks = m.motion_ticks;
-  for (size_t i = 0; i < static_cast<size_t>(m.motion_ticks); ++i) {
-    act.left[i] = from_lcm(m.left[i], what);
-    act.right[i] = from_lcm(m.right[i], what);
-  }
+  for (size_t i = 0; i < static_cast<size_t>(m.motion_ticks); ++i)
+    act.ticks[i] = {from_lcm(m.left[i], what), from_lcm(m.right[i], what)};
   check_finite(m.head_yaw_rad, "head_yaw_rad", what);
   check_finite(m.head_pitch_rad, "head_pitch_rad", what);
   act.head_yaw_rad = m.head_yaw_rad;

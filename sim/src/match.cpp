@@ -112,7 +112,7 @@ bool plausible(const RobotAct& act) {
   if (act.motion_ticks < 0 || act.motion_ticks > kMaxTicksPerFrame) return false;
   const auto within = [](float value, float limit) { return std::isfinite(value) && std::fabs(value) <= limit; };
   for (int i = 0; i < act.motion_ticks; ++i)
-    for (const FootMotion& foot : {act.left[static_cast<size_t>(i)], act.right[static_cast<size_t>(i)]})
+    for (const FootMotion& foot : {act.ticks[static_cast<size_t>(i)].left, act.ticks[static_cast<size_t>(i)].right})
       if (!within(std::hypot(foot.dx_mm, foot.dy_mm), kMaxFootTravelPerTickMm) ||
           !within(foot.dtheta_rad, kMaxFootTurnPerTickRad))
         return false;
@@ -149,7 +149,7 @@ ActOutcome Match::apply(const RobotAct& act, int64_t instance, bool accept_late)
     comm_.send(act.id, frame_start_utime(act.frame), act.team_message, team);
   }
   for (int i = 0; i < act.motion_ticks && i < kMaxTicksPerFrame; ++i)
-    robot->second.pending.push_back({act.left[i], act.right[i]});
+    robot->second.pending.push_back(act.ticks[static_cast<size_t>(i)]);
   while (robot->second.pending.size() > kMaxPendingTicks) robot->second.pending.pop_front();
   robot->second.head_yaw_rad = act.head_yaw_rad;
   robot->second.head_pitch_rad = act.head_pitch_rad;

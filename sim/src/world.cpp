@@ -25,11 +25,6 @@ constexpr float kWallThicknessM = 0.5f;
 // Thickness of the nets, centred on their nominal lines.
 constexpr float kNetThicknessM = 0.02f;
 
-/// Circular mean of two headings: the bisector of the feet, normalised.
-float mean_heading(float a, float b) {
-  return std::atan2(std::sin(a) + std::sin(b), std::cos(a) + std::cos(b));
-}
-
 b2Vec2 rotate(float theta, b2Vec2 v) {
   const float c = std::cos(theta), s = std::sin(theta);
   return b2Vec2(c * v.x - s * v.y, s * v.x + c * v.y);

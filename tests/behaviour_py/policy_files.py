@@ -8,6 +8,7 @@ when ib <= 2. tests/behaviour_cpp/skills/policy_files.hpp writes the same file.
 """
 import pytest
 import robot
+from skills.tile_policy import policyText as formatPolicy
 
 TEST_TILINGS = 2
 TEST_TILES = (4, 8, 8)
@@ -22,22 +23,15 @@ def bearingWeight(ib, action):
     return 0.5 if ib <= 2 else 0.0
 
 
-def policyText(weight=bearingWeight, tilings=TEST_TILINGS, tiles=TEST_TILES, actions=TEST_ACTIONS, header=None):
-    """A policy file: weight(ib, action) for every cell; header: the lines before the
-    weights instead of the test policy's (to break one)."""
+def policyText(weight=bearingWeight, tilings=TEST_TILINGS, tiles=TEST_TILES, actions=TEST_ACTIONS):
+    """A policy file with weight(ib, action) for every cell, written by the format's own
+    writer (skills/tile_policy.py)."""
     tilesU, tilesB, tilesH = tiles
     weights = [weight(ib, a)
                for _ in range(tilings) for _ in range(tilesU + 1) for ib in range(tilesB) for _ in range(tilesH)
                for a in range(len(actions))]
-    if header is None:
-        header = ["touchline-policy 1", "# the go-to-pose test policy (tests/behaviour_py/policy_files.py)",
-                  "features polar-log", "distance_scale_mm 100", "max_distance_mm 12000",
-                  "tilings %d" % tilings, "tiles %d %d %d" % tiles, "success_distance_mm 50",
-                  "success_heading_rad 0.17453", "actions %d" % len(actions)]
-        header += ["action %.9g %.9g %.9g" % action for action in actions]
-        header.append("weights %d" % len(weights))
-    body = ["".join("%.9g " % w for w in weights[i:i + 8]).rstrip() for i in range(0, len(weights), 8)]
-    return "\n".join(header + body) + "\n"
+    return formatPolicy(100.0, 12000.0, tilings, tiles, 50.0, 0.17453, actions, weights,
+                        ["the go-to-pose test policy (tests/behaviour_py/policy_files.py)"])
 
 
 def writePolicy(path, text=None):

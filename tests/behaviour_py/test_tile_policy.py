@@ -8,10 +8,12 @@ action 0 is 3 * (((5k + iu) * 8 + ib) * 8 + ih).
 """
 import math
 
+import numpy as np
 import pytest
 from policy_files import bearingWeight, policyText, writePolicy
 
-from skills.tile_policy import MAX_POLICY_WEIGHTS, PolicyError, cachedPolicy, loadPolicy, parsePolicy, wrapAngle
+from skills.tile_policy import (MAX_POLICY_WEIGHTS, PolicyError, cachedPolicy, loadPolicy, parsePolicy, policyText as
+                                formatPolicy, wrapAngle)
 
 FORWARD, LEFT, RIGHT = 0, 1, 2
 
@@ -19,6 +21,20 @@ FORWARD, LEFT, RIGHT = 0, 1, 2
 @pytest.fixture
 def policy():
     return parsePolicy(policyText(), "test.policy")
+
+
+def test_what_the_writer_writes_reads_back_the_same():
+    # float32 weights (as training holds them) come back as the same float32: %.9g is enough.
+    some = [0.1, -2.5e-7, 3.4028234663852886e38, 1.0 / 3.0, 0.0, 7.0, -1e-30, 12345.678, 0.5]
+    weights = [float(np.float32(w)) for w in some] * 8  # 2 tilings x (1 + 1) x 3 x 3 cells x 2 actions
+    actions = [(300.0, 0.0, 0.25), (0.0, -150.0, 1.0)]
+    text = formatPolicy(80.5, 9000.0, 2, (1, 3, 3), 45.0, 0.2, actions, weights, ["a comment", "another"])
+    read = parsePolicy(text, "written.policy")
+    assert (read.distanceScale, read.maxDistance, read.tilings) == (80.5, 9000.0, 2)
+    assert (read.tilesU, read.tilesB, read.tilesH, read.successDistance, read.successHeading) == (1, 3, 3, 45.0, 0.2)
+    assert read.actions == actions
+    assert [float(np.float32(w)) for w in read.weights] == weights
+    assert text.splitlines()[1:3] == ["# a comment", "# another"]
 
 
 def test_reads_the_header_and_the_actions(policy):

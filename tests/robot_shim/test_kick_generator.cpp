@@ -45,7 +45,7 @@ struct Tick {
 std::vector<Tick> run(MotionAdapter& motion, api::Blackboard& board, int max_ticks = 2000) {
   std::vector<Tick> ticks;
   for (int i = 0; i < max_ticks; ++i) {
-    const EffectorTick out = motion.tick(board);
+    const TickMotion out = motion.tick(board);
     ticks.push_back({board.motion.kickPhase, out.left, out.right, board.motion.active.actionType});
     if (i > 0 && !motion.kick().running()) break;
   }
@@ -234,7 +234,7 @@ TEST(KickGenerator, PrepareFirstBringsTheWalkToAStandWithFeetSquare) {
   int prepare = 0;
   bool feet_moved_in_prepare = false;
   while (true) {
-    const EffectorTick out = motion.tick(board);
+    const TickMotion out = motion.tick(board);
     if (board.motion.kickPhase != 1) break;
     ++prepare;
     feet_moved_in_prepare |= out.left.dx_mm != 0 || out.right.dx_mm != 0;
@@ -266,7 +266,7 @@ TEST(KickGenerator, AStartedKickIgnoresRequestChangesUntilItCompletes) {
   board.behaviour.request.body = kick_request(ActionType::DRIBBLE, 0.2f, 0.5f, Foot::RIGHT);
   int ticks = 20;
   for (; motion.kick().running(); ++ticks) {
-    const EffectorTick out = motion.tick(board);
+    const TickMotion out = motion.tick(board);
     EXPECT_EQ(board.motion.active.actionType, ActionType::KICK);
     EXPECT_EQ(board.motion.active.foot, Foot::LEFT);
     EXPECT_EQ(out.right.dx_mm, 0.f);

@@ -83,7 +83,7 @@ TEST(Robot, WalkingRobotReportsFootMotionAndOdometry) {
   for (int64_t f = 0; f < 90; ++f) { // 3 s
     const SenseFrame frame = frame_with(sense, f);
     const RobotAct act = robot.step(frame, frame.robots[0]);
-    for (int i = 0; i < act.motion_ticks; ++i) moved += (act.left[i].dx_mm + act.right[i].dx_mm) / 2;
+    for (int i = 0; i < act.motion_ticks; ++i) moved += (act.ticks[i].left.dx_mm + act.ticks[i].right.dx_mm) / 2;
   }
   EXPECT_GT(robot.blackboard().motion.odometry.x, 200.f);
   EXPECT_NEAR(moved, robot.blackboard().motion.odometry.x, 0.05f * robot.blackboard().motion.odometry.x);

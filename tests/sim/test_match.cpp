@@ -22,7 +22,7 @@ RobotAct forward_act(RobotId id, int64_t frame, int ticks, float dx_mm) {
   act.id = id;
   act.frame = frame;
   act.motion_ticks = ticks;
-  for (int i = 0; i < ticks; ++i) act.left[i] = act.right[i] = {dx_mm, 0, 0};
+  for (int i = 0; i < ticks; ++i) act.ticks[i].left = act.ticks[i].right = {dx_mm, 0, 0};
   return act;
 }
 
@@ -102,7 +102,7 @@ TEST(Match, FootMotionNoRobotCouldMakeIsRefused) {
   EXPECT_EQ(match.apply(forward_act({0, 1}, 0, 3, 1e30f), 9), ActOutcome::kImplausible);
   EXPECT_EQ(match.apply(forward_act({0, 1}, 0, 3, sim::kMaxFootTravelPerTickMm + 1.f), 9), ActOutcome::kImplausible);
   RobotAct spinning = forward_act({0, 1}, 0, 3, 5.f);
-  spinning.left[1].dtheta_rad = 2 * sim::kMaxFootTurnPerTickRad;
+  spinning.ticks[1].left.dtheta_rad = 2 * sim::kMaxFootTurnPerTickRad;
   EXPECT_EQ(match.apply(spinning, 9), ActOutcome::kImplausible);
   RobotAct head = forward_act({0, 1}, 0, 3, 5.f);
   head.head_pitch_rad = 10.f;

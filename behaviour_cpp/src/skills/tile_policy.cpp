@@ -96,12 +96,6 @@ bool contains(const std::vector<std::string>& keys, const std::string& key) {
 
 } // namespace
 
-double wrapAngle(double angle) {
-  double wrapped = std::fmod(angle + kPiD, 2.0 * kPiD);
-  if (wrapped < 0.0) wrapped += 2.0 * kPiD;
-  return wrapped - kPiD;
-}
-
 TilePolicy::TilePolicy(TilePolicyDef def)
     : def_(std::move(def)), uMax_(std::log(1.0 + def_.maxDistance / def_.distanceScale)) {}
 

@@ -5,7 +5,7 @@
 
 #include <Eigen/Dense>
 
-#include "wrap_angle.hpp"
+#include "touchline/robot_api/geometry.hpp"
 
 namespace touchline::robot::localisation {
 
@@ -67,7 +67,7 @@ bool BallFilter::update(const Observation& ball, const Pose2D& robot, const Pose
 
   // The sighting on the field: robot + range along (robot heading + bearing).
   const double range = ball.distance_mm;
-  const double direction = wrap_angle(static_cast<double>(robot.theta_rad) + ball.heading_rad);
+  const double direction = api::wrapAngle<double>(static_cast<double>(robot.theta_rad) + ball.heading_rad);
   const double c = std::cos(direction), s = std::sin(direction);
   const Eigen::Vector2d z(robot.x_mm + range * c, robot.y_mm + range * s);
 

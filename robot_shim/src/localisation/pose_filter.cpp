@@ -6,7 +6,7 @@
 
 #include <Eigen/Dense>
 
-#include "wrap_angle.hpp"
+#include "touchline/robot_api/geometry.hpp"
 
 namespace touchline::robot::localisation {
 
@@ -30,7 +30,7 @@ std::optional<Linearisation> linearise(const FieldPoint& landmark, const Eigen::
   const double range = std::sqrt(q);
   if (range < min_range_mm) return std::nullopt;
   Linearisation l;
-  l.predicted << range, wrap_angle(std::atan2(dy, dx) - pose(2));
+  l.predicted << range, api::wrapAngle<double>(std::atan2(dy, dx) - pose(2));
   l.h << -dx / range, -dy / range, 0.0,
          dy / q, -dx / q, -1.0;
   return l;
@@ -39,7 +39,7 @@ std::optional<Linearisation> linearise(const FieldPoint& landmark, const Eigen::
 /// z - predicted, the bearing wrapped: a landmark seen at +3.1 rad and predicted at -3.1
 /// is 0.08 rad off, not 6.2.
 Eigen::Vector2d measurement_difference(const Eigen::Vector2d& z, const Eigen::Vector2d& predicted) {
-  return {z(0) - predicted(0), wrap_angle(z(1) - predicted(1))};
+  return {z(0) - predicted(0), api::wrapAngle<double>(z(1) - predicted(1))};
 }
 } // namespace
 
@@ -53,7 +53,7 @@ OdometryDelta odometry_delta(const Pose2D& before, const Pose2D& after) {
   const double c = std::cos(static_cast<double>(before.theta_rad)), s = std::sin(static_cast<double>(before.theta_rad));
   // Rotate the odometry-frame displacement into the robot frame at `before`.
   return {c * dx + s * dy, -s * dx + c * dy,
-          wrap_angle(static_cast<double>(after.theta_rad) - before.theta_rad)};
+          api::wrapAngle<double>(static_cast<double>(after.theta_rad) - before.theta_rad)};
 }
 
 PoseFilter::PoseFilter(FieldMap field, PoseFilterDef def, const Pose2D& initial)
@@ -62,7 +62,7 @@ PoseFilter::PoseFilter(FieldMap field, PoseFilterDef def, const Pose2D& initial)
 }
 
 void PoseFilter::reset(const Pose2D& pose, const PoseCovariance& covariance) {
-  mean_ = {pose.x_mm, pose.y_mm, wrap_angle(pose.theta_rad)};
+  mean_ = {pose.x_mm, pose.y_mm, api::wrapAngle<double>(pose.theta_rad)};
   covariance_ = covariance;
   rejections_in_a_row_ = 0;
 }
@@ -76,7 +76,7 @@ void PoseFilter::predict(const OdometryDelta& delta) {
   const double c = std::cos(theta), s = std::sin(theta);
   mean_[0] += c * delta.dx_mm - s * delta.dy_mm;
   mean_[1] += s * delta.dx_mm + c * delta.dy_mm;
-  mean_[2] = wrap_angle(theta + delta.dtheta_rad);
+  mean_[2] = api::wrapAngle<double>(theta + delta.dtheta_rad);
 
   // Jacobian of the motion with respect to the state: only the heading moves x and y.
   Matrix3 f = Matrix3::Identity();
@@ -149,11 +149,11 @@ UpdateResult PoseFilter::update(const Observation& observation) {
     h = lin.h;
     k = p * h.transpose() * (h * p * h.transpose() + r).inverse();
     Eigen::Vector3d from_prior = prior - estimate;
-    from_prior(2) = wrap_angle(from_prior(2));
+    from_prior(2) = api::wrapAngle<double>(from_prior(2));
     Eigen::Vector3d next = prior + k * (measurement_difference(z, lin.predicted) - h * from_prior);
-    next(2) = wrap_angle(next(2));
+    next(2) = api::wrapAngle<double>(next(2));
     const bool settled = (next.head<2>() - estimate.head<2>()).norm() < 1.0 &&
-                         std::fabs(wrap_angle(next(2) - estimate(2))) < 1e-3;
+                         std::fabs(api::wrapAngle<double>(next(2) - estimate(2))) < 1e-3;
     estimate = next;
     if (settled) break;
     const auto relinearised = linearise(*landmark, estimate, def_.min_range_mm);
@@ -173,7 +173,7 @@ UpdateResult PoseFilter::update(const Observation& observation) {
 
 Pose2D PoseFilter::pose() const {
   return {static_cast<float>(mean_[0]), static_cast<float>(mean_[1]),
-          normalise_angle(static_cast<float>(mean_[2]))};
+          api::wrapAngle(static_cast<float>(mean_[2]))};
 }
 
 double PoseFilter::sigma_x_mm() const { return std::sqrt(covariance_[0]); }

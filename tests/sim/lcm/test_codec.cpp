@@ -26,8 +26,8 @@ RobotAct sample_act() {
   act.frame = 42;
   act.motion_ticks = 4;
   for (int i = 0; i < 4; ++i) {
-    act.left[i] = {1.5f * static_cast<float>(i), -0.5f, 0.01f};
-    act.right[i] = {2.f, 0.25f * static_cast<float>(i), -0.02f};
+    act.ticks[i].left = {1.5f * static_cast<float>(i), -0.5f, 0.01f};
+    act.ticks[i].right = {2.f, 0.25f * static_cast<float>(i), -0.02f};
   }
   act.head_yaw_rad = 0.3f;
   act.head_pitch_rad = -0.1f;
@@ -92,8 +92,8 @@ TEST(Codec, ActSurvivesEncodeAndDecode) {
   EXPECT_EQ(out.frame, in.frame);
   ASSERT_EQ(out.motion_ticks, 4);
   for (int i = 0; i < 4; ++i) {
-    EXPECT_EQ(out.left[i].dx_mm, in.left[i].dx_mm);
-    EXPECT_EQ(out.right[i].dy_mm, in.right[i].dy_mm);
+    EXPECT_EQ(out.ticks[i].left.dx_mm, in.ticks[i].left.dx_mm);
+    EXPECT_EQ(out.ticks[i].right.dy_mm, in.ticks[i].right.dy_mm);
   }
   EXPECT_EQ(out.leds, in.leds);
   EXPECT_EQ(out.behaviour_cpu_us, 1234);

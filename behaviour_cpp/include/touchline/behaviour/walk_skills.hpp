@@ -4,12 +4,6 @@
 
 namespace touchline::behaviour {
 
-/// Stands still, head forward.
-class Stand : public api::Behaviour {
- public:
-  api::ActionCommand::All tick(const api::Blackboard& blackboard) override;
-};
-
 /// Walks at a constant velocity (mm/s, rad/s) for ever: for calibrating the walk.
 class ConstantWalk : public api::Behaviour {
  public:

@@ -21,17 +21,12 @@ struct HeadDef {
   float max_speed_rad_s = 4.0f;    ///< at yawSpeed/pitchSpeed = 1
 };
 
-/// What the effector sends to the world for one motion tick.
-struct EffectorTick {
-  FootMotion left, right;
-};
-
 class MotionAdapter {
  public:
   MotionAdapter(const WalkDef& walk, const HeadDef& head = {}, const KickDef& kick = {});
 
-  /// One 10 ms motion tick.
-  EffectorTick tick(api::Blackboard& blackboard);
+  /// One 10 ms motion tick: how the feet move, for the world (frame.hpp).
+  TickMotion tick(api::Blackboard& blackboard);
 
   const WalkCycle& walk() const { return walk_; }
   const KickGenerator& kick() const { return kick_; }

@@ -18,11 +18,19 @@ struct Pose2D {
 };
 
 /// How one foot moves during one motion tick, in the body frame at the start of the
-/// tick (body = midpoint of the feet, +x forward, +y left).
+/// tick (body = midpoint of the feet, heading mean_heading of the feet's (angles.hpp),
+/// +x forward, +y left).
 struct FootMotion {
   float dx_mm = 0;      ///< forward, millimetres
   float dy_mm = 0;      ///< left, millimetres
   float dtheta_rad = 0; ///< counter-clockwise, radians
+};
+
+/// How both feet of one robot move during one 10 ms motion tick: what the robot's motion
+/// thread makes, RobotAct carries and the world steps, unchanged all the way.
+struct TickMotion {
+  FootMotion left;
+  FootMotion right;
 };
 
 struct RobotId {
@@ -145,9 +153,8 @@ struct SenseFrame {
 struct RobotAct {
   RobotId id;
   int64_t frame = 0;
-  int motion_ticks = 0; ///< entries used in left/right
-  std::array<FootMotion, kMaxTicksPerFrame> left{};
-  std::array<FootMotion, kMaxTicksPerFrame> right{};
+  int motion_ticks = 0; ///< entries used in ticks
+  std::array<TickMotion, kMaxTicksPerFrame> ticks{};
   float head_yaw_rad = 0;   ///< + left
   float head_pitch_rad = 0; ///< + down
   int32_t leds = 0;         ///< chest LED, 0xRRGGBB (the world shows it in its truth)

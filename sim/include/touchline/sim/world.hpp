@@ -48,12 +48,6 @@ struct BallTruth {
   float vx_mm_s = 0, vy_mm_s = 0;
 };
 
-/// One robot's foot motions for one motion tick (body frame at the tick start).
-struct TickMotion {
-  FootMotion left;
-  FootMotion right;
-};
-
 /// Notes on the physics: pressed contacts (feet against feet) rest overlapping by Box2D's
 /// linear slop, 5 mm; a 10 m/s ball may overlap a wall or foot by up to 15 mm for the
 /// step of impact. The ball does not spin about the vertical (a top-down spin is not a

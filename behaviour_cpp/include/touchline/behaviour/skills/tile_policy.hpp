@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "touchline/robot_api/geometry.hpp"
+
 namespace touchline::behaviour::skills {
 
 inline constexpr const char* POLICY_MAGIC = "touchline-policy";  ///< first word of a policy file ...
@@ -21,8 +23,9 @@ inline constexpr int B_TILING_OFFSET = 3;        ///< ... along the bearing ...
 inline constexpr int H_TILING_OFFSET = 5;        ///< ... and along the heading error
 inline constexpr int MAX_POLICY_WEIGHTS = 10000000; ///< more is not a policy this reader should hold in memory
 
-/// angle in [-pi, pi), in double (the format's h).
-double wrapAngle(double angle);
+/// angle in [-pi, pi), in double (the format's h): the robot API's wrap, named as in
+/// tile_policy.py.
+using api::wrapAngle;
 
 /// One action of the policy: a walk request.
 struct WalkAction {

@@ -7,12 +7,20 @@ namespace touchline::api {
 
 constexpr float kPi = 3.14159265358979323846f;
 
-/// Wraps an angle into [-pi, pi).
-inline float normaliseTheta(float theta) {
-  theta = std::fmod(theta + kPi, 2 * kPi);
-  if (theta < 0) theta += 2 * kPi;
-  return theta - kPi;
+/// Wraps an angle into [-pi, pi), in the precision it is given: float for the robot code,
+/// double for the learned policy's tiles and the localisation filters. The project's one
+/// angle wrap (touchline/angles.hpp's normalise_angle is this too). fmod, as Python's
+/// math.fmod in behaviour_py/skills/tile_policy.py: the two ports must pick the same tile.
+template <typename Real>
+Real wrapAngle(Real angle) {
+  constexpr Real pi = static_cast<Real>(3.14159265358979323846);
+  angle = std::fmod(angle + pi, 2 * pi);
+  if (angle < 0) angle += 2 * pi;
+  return angle - pi;
 }
+
+/// Wraps an angle into [-pi, pi) (runswift's name, float).
+inline float normaliseTheta(float theta) { return wrapAngle(theta); }
 
 /// An absolute (field) or odometry pose.
 struct AbsCoord {
