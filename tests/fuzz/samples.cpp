@@ -13,7 +13,7 @@ RobotAct act(int ticks) {
   a.id = {1, 4};
   a.frame = 77;
   a.motion_ticks = ticks;
-  for (size_t i = 0; i < static_cast<size_t>(ticks); ++i) a.left[i] = a.right[i] = {1.f, 0.5f, 0.01f};
+  for (size_t i = 0; i < static_cast<size_t>(ticks); ++i) a.ticks[i] = {{1.f, 0.5f, 0.01f}, {1.f, 0.5f, 0.01f}};
   a.team_message = {9, 8, 7};
   return a;
 }
