@@ -17,6 +17,7 @@ namespace touchline::transport {
 namespace {
 
 std::atomic<bool> g_stop{false};
+constexpr int64_t kMaxReports = 20; ///< malformed messages reported, one line each; the rest counted
 
 /// Tells this process's joins and acts from those of another shim claiming the same robot.
 int64_t random_instance() {
@@ -24,11 +25,12 @@ int64_t random_instance() {
   return static_cast<int64_t>(rng() >> 1) | 1;
 }
 
-class RobotNode {
+} // namespace
+
+class RobotNode::Impl {
  public:
-  RobotNode(robot::Robot& robot, const RobotNodeDef& def, std::ostream& log)
-      : robot_(robot), def_(def), log_(log),
-        bus_(def.lcm_url, def.key, [this](const std::string& what) { report_malformed(what); }),
+  Impl(robot::Robot& robot, const RobotNodeDef& def, Bus& bus, std::ostream& log)
+      : robot_(robot), def_(def), log_(log), bus_(bus),
         act_channel_(act_channel(robot.id())), snapshot_channel_(snapshot_channel(robot.id())),
         name_("robot_shim " + std::to_string(robot.id().team) + "/" + std::to_string(robot.id().player)) {
     instance_ = def.instance ? def.instance : random_instance();
@@ -37,6 +39,19 @@ class RobotNode {
     bus_.subscribe(kGameChannel, [this](const BusMessage& m) { on_game(m); });
     robot_.keep_behaviour_view(def.snapshot_every > 0);
   }
+
+  /// One request to play (join() repeats it until the world answers).
+  void request_join() {
+    join_t msg;
+    msg.utime = wall_us();
+    msg.team = static_cast<int8_t>(robot_.id().team);
+    msg.player = static_cast<int8_t>(robot_.id().player);
+    msg.instance = instance_;
+    msg.pid = static_cast<int32_t>(getpid());
+    bus_.publish(kJoinChannel, msg);
+  }
+  bool joined() const { return joined_; }
+  bool match_over() const { return exit_ == RobotExit::kMatchOver; }
 
   RobotExit run() {
     if (!join()) return exit_;
@@ -71,13 +86,7 @@ class RobotNode {
         break;
       }
       if (now >= next_request) {
-        join_t msg;
-        msg.utime = now;
-        msg.team = static_cast<int8_t>(robot_.id().team);
-        msg.player = static_cast<int8_t>(robot_.id().player);
-        msg.instance = instance_;
-        msg.pid = static_cast<int32_t>(getpid());
-        bus_.publish(kJoinChannel, msg);
+        request_join();
         next_request = now + 250000;
       }
       bus_.handle(50);
@@ -147,14 +156,14 @@ class RobotNode {
   }
 
   void report_malformed(const std::string& what) {
-    if (malformed_++ < 20) log_ << name_ << ": ignored malformed message: " << what << "\n" << std::flush;
+    if (malformed_++ < kMaxReports) log_ << name_ << ": ignored malformed message: " << what << "\n" << std::flush;
   }
 
   robot::Robot& robot_;
   const RobotNodeDef& def_;
   std::ostream& log_;
 
-  Bus bus_;
+  Bus& bus_;
   std::vector<uint8_t> last_act_; ///< the last answer as sent, for a repeated frame
   std::string act_channel_;
   std::string snapshot_channel_;
@@ -168,13 +177,24 @@ class RobotNode {
   int64_t malformed_ = 0;
 };
 
-} // namespace
+RobotNode::RobotNode(robot::Robot& robot, const RobotNodeDef& def, Bus& bus, std::ostream& log)
+    : impl_(std::make_unique<Impl>(robot, def, bus, log)) {}
+RobotNode::~RobotNode() = default;
+RobotExit RobotNode::run() { return impl_->run(); }
+void RobotNode::request_join() { impl_->request_join(); }
+bool RobotNode::joined() const { return impl_->joined(); }
+bool RobotNode::match_over() const { return impl_->match_over(); }
 
 void request_robot_stop() { g_stop = true; }
 
 RobotExit run_robot(robot::Robot& robot, const RobotNodeDef& def, std::ostream& log) {
   g_stop = false;
-  RobotNode node(robot, def, log);
+  int64_t reports = 0;
+  const std::string name = "robot_shim " + std::to_string(robot.id().team) + "/" + std::to_string(robot.id().player);
+  Bus bus(def.lcm_url, def.key, [&](const std::string& what) {
+    if (reports++ < kMaxReports) log << name << ": ignored malformed message: " << what << "\n" << std::flush;
+  });
+  RobotNode node(robot, def, bus, log);
   return node.run();
 }
 

@@ -27,6 +27,7 @@ namespace touchline::transport {
 namespace {
 
 std::atomic<bool> g_stop{false};
+constexpr int64_t kMaxBusReports = 20; ///< refused messages reported, one line each; the rest counted
 
 std::string describe(const sim::MatchEvent& event) {
   std::ostringstream out;
@@ -69,9 +70,8 @@ world_truth_t to_msg(const sim::TruthFrame& truth) {
 
 class WorldNode {
  public:
-  WorldNode(sim::Match& match, const WorldNodeDef& def, std::ostream& log)
-      : match_(match), def_(def), log_(log),
-        bus_(def.lcm_url, def.key, [this](const std::string& what) { rejected(what); }) {
+  WorldNode(sim::Match& match, const WorldNodeDef& def, Bus& bus, std::ostream& log)
+      : match_(match), def_(def), log_(log), bus_(bus) {
     bus_.subscribe(kJoinChannel, [this](const BusMessage& m) { on_join(m); });
     bus_.subscribe(kActChannelPattern, [this](const BusMessage& m) { on_act(m); });
     if (!def.log_path.empty()) {
@@ -303,10 +303,7 @@ class WorldNode {
     if (summary_.malformed++ < kMaxMalformedReports) log_ << "sim_world: ignored malformed message: " << what << "\n" << std::flush;
   }
 
-  /// A message the bus refused (no valid tag) or whose handler failed.
-  void rejected(const std::string& what) {
-    if (rejected_reports_++ < kMaxMalformedReports) log_ << "sim_world: " << what << "\n" << std::flush;
-  }
+
 
   void report(RobotId id, int8_t state, const std::string& detail) {
     log_ << "sim_world: " << sim::describe(id) << " " << detail << "\n" << std::flush;
@@ -376,8 +373,7 @@ class WorldNode {
   sim::Match& match_;
   const WorldNodeDef& def_;
   std::ostream& log_;
-  Bus bus_;
-  int64_t rejected_reports_ = 0;
+  Bus& bus_;
   sim::FrameBarrier barrier_;
   std::unique_ptr<MatchRecorder> recorder_;
   std::optional<GameControllerReceiver> gamecontroller_;
@@ -391,10 +387,18 @@ class WorldNode {
 
 void request_stop() { g_stop = true; }
 
-RunSummary run_world(sim::Match& match, const WorldNodeDef& def, std::ostream& log) {
+RunSummary run_world(sim::Match& match, const WorldNodeDef& def, Bus& bus, std::ostream& log) {
   g_stop = false;
-  WorldNode node(match, def, log);
+  WorldNode node(match, def, bus, log);
   return node.run();
+}
+
+RunSummary run_world(sim::Match& match, const WorldNodeDef& def, std::ostream& log) {
+  int64_t reports = 0; // a message the bus refused (no valid tag) or whose handler failed
+  Bus bus(def.lcm_url, def.key, [&](const std::string& what) {
+    if (reports++ < kMaxBusReports) log << "sim_world: " << what << "\n" << std::flush;
+  });
+  return run_world(match, def, bus, log);
 }
 
 std::string hex_hash(uint64_t value) {

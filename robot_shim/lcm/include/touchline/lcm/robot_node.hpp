@@ -3,8 +3,10 @@
 // frame with the act_t that the Robot computes. The robot code sees simulated time only.
 #include <cstdint>
 #include <iosfwd>
+#include <memory>
 #include <string>
 
+#include "touchline/lcm/bus.hpp"
 #include "touchline/lcm/codec.hpp"
 #include "touchline/lcm/match_key.hpp"
 #include "touchline/robot/robot.hpp"
@@ -28,7 +30,27 @@ enum class RobotExit {
   kInterrupted, ///< SIGINT/SIGTERM
 };
 
-/// Joins and plays until the match is over. Messages for the user go to `log`.
+/// One robot on a match bus: asks to join, then answers every sense the bus delivers with
+/// the act the Robot computes. run() is the shim's loop; on a bus driven by someone else
+/// (the world's loop on a shared memq:// bus, in tests) the handlers alone play the robot.
+class RobotNode {
+ public:
+  RobotNode(robot::Robot& robot, const RobotNodeDef& def, Bus& bus, std::ostream& log);
+  ~RobotNode();
+  /// Joins (asking again every 250 ms) and plays until the match is over.
+  RobotExit run();
+  /// Sends one request to play.
+  void request_join();
+  bool joined() const;
+  /// The world said FINISHED.
+  bool match_over() const;
+
+ private:
+  class Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Opens the bus at def.lcm_url and runs a RobotNode on it. Messages for the user go to `log`.
 RobotExit run_robot(robot::Robot& robot, const RobotNodeDef& def, std::ostream& log);
 
 /// Asks a running run_robot to return (signal-safe).

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "touchline/lcm/bus.hpp"
 #include "touchline/lcm/codec.hpp"
 #include "touchline/lcm/match_key.hpp"
 #include "touchline/lcm/gamecontroller_receiver.hpp"
@@ -55,9 +56,13 @@ struct RunSummary {
   bool interrupted = false; ///< stopped by SIGINT/SIGTERM
 };
 
-/// Runs the match to its end. Messages for the user go to `log`, one line each.
-/// Throws std::runtime_error when the robots do not join in time or LCM fails.
+/// Opens the bus at def.lcm_url and runs the match to its end. Messages for the user go to
+/// `log`, one line each. Throws std::runtime_error when the robots do not join in time or
+/// LCM fails.
 RunSummary run_world(sim::Match& match, const WorldNodeDef& def, std::ostream& log);
+/// The same on a bus someone else opened (e.g. memq:// shared with RobotNodes in one
+/// process: this loop then dispatches their messages too). def.lcm_url and def.key are unused.
+RunSummary run_world(sim::Match& match, const WorldNodeDef& def, Bus& bus, std::ostream& log);
 
 /// 16 lowercase hex digits.
 std::string hex_hash(uint64_t value);
