@@ -27,7 +27,8 @@ namespace touchline::transport {
 namespace {
 
 std::atomic<bool> g_stop{false};
-constexpr int64_t kMaxBusReports = 20; ///< refused messages reported, one line each; the rest counted
+/// Malformed or refused messages reported, one line each, per kind; the rest are counted.
+constexpr int64_t kMaxReports = 20;
 
 std::string describe(const sim::MatchEvent& event) {
   std::ostringstream out;
@@ -300,10 +301,8 @@ class WorldNode {
   }
 
   void malformed(const std::string& what) {
-    if (summary_.malformed++ < kMaxMalformedReports) log_ << "sim_world: ignored malformed message: " << what << "\n" << std::flush;
+    if (summary_.malformed++ < kMaxReports) log_ << "sim_world: ignored malformed message: " << what << "\n" << std::flush;
   }
-
-
 
   void report(RobotId id, int8_t state, const std::string& detail) {
     log_ << "sim_world: " << sim::describe(id) << " " << detail << "\n" << std::flush;
@@ -368,7 +367,6 @@ class WorldNode {
   static constexpr int kFinishedRepeats = 5;
   static constexpr int kFinishedGapMs = 10;
   static constexpr int64_t kConfigPeriodUs = 1000000; ///< TL_MATCH while the robots join, wall time
-  static constexpr int64_t kMaxMalformedReports = 20;
 
   sim::Match& match_;
   const WorldNodeDef& def_;
@@ -396,7 +394,7 @@ RunSummary run_world(sim::Match& match, const WorldNodeDef& def, Bus& bus, std::
 RunSummary run_world(sim::Match& match, const WorldNodeDef& def, std::ostream& log) {
   int64_t reports = 0; // a message the bus refused (no valid tag) or whose handler failed
   Bus bus(def.lcm_url, def.key, [&](const std::string& what) {
-    if (reports++ < kMaxBusReports) log << "sim_world: " << what << "\n" << std::flush;
+    if (reports++ < kMaxReports) log << "sim_world: " << what << "\n" << std::flush;
   });
   return run_world(match, def, bus, log);
 }

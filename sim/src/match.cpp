@@ -144,9 +144,7 @@ ActOutcome Match::apply(const RobotAct& act, int64_t instance, bool accept_late)
   member->behaviour_cpu_us_max = std::max(member->behaviour_cpu_us_max, act.behaviour_cpu_us);
   record_localisation_error(act, *member);
   if (!act.team_message.empty()) {
-    std::vector<RobotId> team;
-    for (const auto& [id, other] : on_field_) team.push_back(id);
-    comm_.send(act.id, frame_start_utime(act.frame), act.team_message, team);
+    comm_.send(act.id, frame_start_utime(act.frame), act.team_message, robots_on_field());
   }
   for (int i = 0; i < act.motion_ticks && i < kMaxTicksPerFrame; ++i)
     robot->second.pending.push_back(act.ticks[static_cast<size_t>(i)]);
