@@ -169,7 +169,7 @@ int main(int argc, char** argv) {
       "Usage: touchline_bench [options]\nOptions");
   options.add_options()
     ("help,h", "print this help and exit")
-    ("bin-dir", po::value(&bin_dirs), "build folder holding sim/sim_world and robot_shim/robot_shim (the last one "
+    ("bin-dir", po::value(&bin_dirs), "build folder holding bin/sim_world and bin/robot_shim (the last one "
                                       "given wins; default: the build folder of this executable)")
     ("duration", po::value(&opt.duration_s)->default_value(opt.duration_s), "simulated seconds per lockstep run")
     ("repeat", po::value(&opt.repeat)->default_value(opt.repeat), "lockstep runs per configuration (median reported)")
@@ -209,7 +209,7 @@ int main(int argc, char** argv) {
 
   try {
     std::string dir;
-    for (const char* rel : {"/sim/sim_world", "/robot_shim/robot_shim"}) {
+    for (const char* rel : {"/bin/sim_world", "/bin/robot_shim"}) {
       const std::string path = opt.bin_dir + rel;
       if (access(path.c_str(), X_OK) != 0)
         throw BenchError(path + " is missing or not executable (build sim_world and robot_shim, or pass --bin-dir)");

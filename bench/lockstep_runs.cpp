@@ -123,8 +123,8 @@ size_t count_occurrences(const std::string& text, const std::string& needle) {
 RunResult run_lockstep(const Options& opt, int robots, const std::string& dir, int run_index, double timeout_s) {
   const std::string tag = std::to_string(robots) + "r" + std::to_string(run_index);
   const std::string summary = dir + "/summary_" + tag + ".json";
-  const std::string sim_world = opt.bin_dir + "/sim/sim_world";
-  const std::string robot_shim = opt.bin_dir + "/robot_shim/robot_shim";
+  const std::string sim_world = opt.bin_dir + "/bin/sim_world";
+  const std::string robot_shim = opt.bin_dir + "/bin/robot_shim";
   std::ostringstream duration;
   duration << opt.duration_s;
 

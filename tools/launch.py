@@ -148,8 +148,8 @@ class Launcher:
 
     def run(self) -> int:
         a = self.args
-        bin_world = a.build_dir / "sim" / "sim_world"
-        bin_shim = a.build_dir / "robot_shim" / "robot_shim"
+        bin_world = a.build_dir / "bin" / "sim_world"
+        bin_shim = a.build_dir / "bin" / "robot_shim"
         for b in (bin_world, bin_shim):
             if not b.exists():
                 print(f"launch: {b} not found; build first (tools/setup)", file=sys.stderr)

@@ -58,13 +58,13 @@ def run_scenario(build: Path, data_dir: Path, params: dict, ball: tuple, seconds
                  log: Path) -> None:
     overrides = [f"match.ball_start_x_mm={ball[0]}", f"match.ball_start_y_mm={ball[1]}", *sets]
     os.environ.setdefault("TOUCHLINE_MATCH_SECRET", secrets.token_hex(32))  # the programs authenticate with it
-    world = subprocess.Popen([build / "sim" / "sim_world", "--robots", str(len(robots)), "--duration", str(seconds),
+    world = subprocess.Popen([build / "bin" / "sim_world", "--robots", str(len(robots)), "--duration", str(seconds),
                               "--quiet", "--lcm-url", LCM_URL, "--log", log,
                               *[a for o in overrides for a in ("--set", o)]],
                              stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     shims = []
     for team, player in robots:
-        args = [build / "robot_shim" / "robot_shim", "--team", str(team), "--player", str(player), "--behaviour", "py",
+        args = [build / "bin" / "robot_shim", "--team", str(team), "--player", str(player), "--behaviour", "py",
                 "--lcm-url", LCM_URL, "--snapshot-every", "1", "--data-dir", data_dir]
         for key, value in params.items():
             args += ["--param", f"{key}={value}"]

@@ -13,7 +13,7 @@
 #include "mutator.hpp"
 #include "touchline/lcm/codec.hpp"
 #include "touchline/lcm/snapshot.hpp"
-#include "touchline/sim/gamecontroller.hpp"
+#include "touchline/gamecontroller/packet.hpp"
 
 namespace touchline::fuzz {
 

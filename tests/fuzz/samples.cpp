@@ -2,7 +2,7 @@
 
 #include "touchline/lcm/codec.hpp"
 #include "touchline/lcm/snapshot.hpp"
-#include "touchline/sim/gamecontroller.hpp"
+#include "touchline/gamecontroller/packet.hpp"
 
 namespace touchline::fuzz {
 

@@ -43,7 +43,7 @@ std::vector<Bytes> sample_encodings() {
   return out;
 }
 
-/// Valid GameController data packets (layout in touchline/sim/gamecontroller.hpp) of teams
+/// Valid GameController data packets (layout in touchline/gamecontroller/packet.hpp) of teams
 /// 5 and 12: versions 15 and 18, PLAYING, STANDBY and READY, penalties on both sides.
 std::vector<Bytes> gamecontroller_samples();
 

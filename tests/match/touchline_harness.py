@@ -20,8 +20,8 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 BUILD = Path(os.environ.get("TOUCHLINE_BUILD_DIR", ROOT / "build"))
-SIM_WORLD = BUILD / "sim" / "sim_world"
-ROBOT_SHIM = BUILD / "robot_shim" / "robot_shim"
+SIM_WORLD = BUILD / "bin" / "sim_world"
+ROBOT_SHIM = BUILD / "bin" / "robot_shim"
 WALK_INI = ROOT / "config" / "walk.ini"
 LCM_URL = "udpm://239.255.76.67:7667?ttl=0"
 WAIT_S = 60  # the longest any step of a test waits before failing

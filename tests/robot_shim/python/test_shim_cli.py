@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[3]
-ROBOT_SHIM = Path(os.environ.get("TOUCHLINE_BUILD_DIR", ROOT / "build")) / "robot_shim" / "robot_shim"
+ROBOT_SHIM = Path(os.environ.get("TOUCHLINE_BUILD_DIR", ROOT / "build")) / "bin" / "robot_shim"
 FIXTURES = Path(__file__).resolve().parent / "fixtures"
 ROBOT = ["--team", "0", "--player", "3"]
 

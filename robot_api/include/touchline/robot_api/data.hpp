@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string>
 
-// The build passes the source tree's config/ (robot_shim/CMakeLists.txt); a compile
+// The build passes the source tree's config/ (robot_api/CMakeLists.txt); a compile
 // without it gets the robot's own place.
 #ifndef TOUCHLINE_DEFAULT_DATA_DIR
 #define TOUCHLINE_DEFAULT_DATA_DIR "/home/nao/data"

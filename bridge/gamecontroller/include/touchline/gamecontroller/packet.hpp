@@ -1,7 +1,7 @@
 #pragma once
 // Decoding the official SPL GameController's data packet (RoboCupGameControlData, sent
 // over UDP to port 3838) into the world's GameInfo. Pure: bytes in, values out; no
-// sockets (the receiver is touchline/lcm/gamecontroller_receiver.hpp).
+// sockets (the receiver is touchline/gamecontroller/receiver.hpp).
 //
 // Supported: GAMECONTROLLER_STRUCT_VERSION 15 and 18, the versions of
 // game_controller_msgs/headers/RoboCupGameControlData.h in RoboCup-SPL/GameController3

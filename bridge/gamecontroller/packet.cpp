@@ -1,4 +1,4 @@
-#include "touchline/sim/gamecontroller.hpp"
+#include "touchline/gamecontroller/packet.hpp"
 
 #include <cstdio>
 

@@ -1,4 +1,4 @@
-#include "touchline/lcm/gamecontroller_receiver.hpp"
+#include "touchline/gamecontroller/receiver.hpp"
 
 #include <arpa/inet.h>
 #include <netinet/in.h>

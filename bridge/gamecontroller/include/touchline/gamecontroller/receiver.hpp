@@ -1,7 +1,7 @@
 #pragma once
 // Receives the official SPL GameController's data packets over UDP (IPv4), for a world
 // that takes its game state from the GameController instead of its built-in referee.
-// Decoding is touchline/sim/gamecontroller.hpp; this only owns the socket.
+// Decoding is touchline/gamecontroller/packet.hpp; this only owns the socket.
 //
 // poll() never blocks: it reads every datagram waiting, and returns the latest one that
 // decodes (in arrival order), or nothing if none did since the last poll. Datagrams that
@@ -13,7 +13,7 @@
 #include <optional>
 #include <string>
 
-#include "touchline/sim/gamecontroller.hpp"
+#include "touchline/gamecontroller/packet.hpp"
 
 namespace touchline::transport {
 

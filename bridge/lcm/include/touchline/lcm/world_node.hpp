@@ -11,7 +11,7 @@
 #include "touchline/lcm/bus.hpp"
 #include "touchline/lcm/codec.hpp"
 #include "touchline/lcm/match_key.hpp"
-#include "touchline/lcm/gamecontroller_receiver.hpp"
+#include "touchline/gamecontroller/receiver.hpp"
 #include "touchline/sim/match.hpp"
 
 namespace touchline::transport {

@@ -1,6 +1,6 @@
 // The GameController receiver on loopback only: it binds 127.0.0.1 on an ephemeral port
 // and this test sends it datagrams from a second socket.
-#include "touchline/lcm/gamecontroller_receiver.hpp"
+#include "touchline/gamecontroller/receiver.hpp"
 
 #include <arpa/inet.h>
 #include <netinet/in.h>
@@ -21,7 +21,7 @@ using transport::GameControllerReceiverOptions;
 
 namespace {
 
-// A version-15 packet per the documented layout (see touchline/sim/gamecontroller.hpp):
+// A version-15 packet per the documented layout (see touchline/gamecontroller/packet.hpp):
 // teams 5 and 12, team 5 kicking off.
 std::vector<uint8_t> packet(uint8_t packet_number, uint8_t state, uint8_t score0, uint8_t score1) {
   std::vector<uint8_t> b(118, 0);
