@@ -18,7 +18,7 @@ import sys
 from pathlib import Path
 
 sys.path.append(str(Path(__file__).resolve().parents[1] / "behaviour_py"))
-from skills.tile_policy import policyText  # noqa: E402 (the format's one writer)
+from skills.tile_policy import policyText, wrapAngle as wrap  # noqa: E402 (the format's one writer, the one wrap)
 
 TILINGS = 4
 TILES = (10, 16, 16)            # distance (log), bearing, heading error
@@ -32,10 +32,6 @@ ACTIONS = (                      # forward mm/s, left mm/s, turn rad/s
     (150.0, 0.0, 0.6), (150.0, 0.0, -0.6), (0.0, 0.0, 1.0), (0.0, 0.0, -1.0),
     (0.0, 0.0, 0.3), (0.0, 0.0, -0.3), (0.0, 150.0, 0.0), (0.0, -150.0, 0.0),
 )
-
-
-def wrap(angle: float) -> float:
-    return math.atan2(math.sin(angle), math.cos(angle))
 
 
 def cost(x: float, y: float, heading: float) -> float:

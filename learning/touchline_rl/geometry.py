@@ -1,10 +1,9 @@
 """Poses as (x mm, y mm, theta rad) tuples, field frame unless named otherwise."""
 import math
 
-
-def wrap(angle):
-    """angle in [-pi, pi)."""
-    return (angle + math.pi) % (2 * math.pi) - math.pi
+# The robots' one angle wrap (to [-pi, pi)), the formula the tile indices of a policy use, so
+# training and play agree on every heading.
+from touchline_rl.robot_skills import wrapAngle as wrap
 
 
 def relative_target(pose, target):

@@ -2,15 +2,11 @@
 deployed skills, and reads one back into a TileQ (to evaluate or go on training), with the
 robots' own writer and reader (behaviour_py/skills/tile_policy.py)."""
 import math
-import sys
 
 import numpy as np
 
-from touchline_rl.native import REPO, touchline_sim
-
-if str(REPO / "behaviour_py") not in sys.path:
-    sys.path.append(str(REPO / "behaviour_py"))
-from skills.tile_policy import loadPolicy, policyText  # noqa: E402
+from touchline_rl.native import touchline_sim
+from touchline_rl.robot_skills import loadPolicy, policyText
 
 
 def write_policy(path, q, success_distance_mm=50.0, success_heading_rad=math.radians(10.0), comments=()):
