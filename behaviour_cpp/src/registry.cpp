@@ -115,10 +115,10 @@ const std::vector<Entry>& entries() {
          const float forward = p.number("forward", 0), left = p.number("left", 0), turn = p.number("turn", 0);
          return std::make_unique<ConstantWalk>(forward, left, turn);
        }},
-      {"goto", "walks to a field pose and stands: x (mm), y (mm), theta (rad)",
+      {"goto", "walks to a field pose and stands (GoToPose, head still): x (mm), y (mm), theta (rad)",
        [](ParamReader& p) {
          const float x = p.number("x", 0), y = p.number("y", 0), theta = p.number("theta", 0);
-         return std::make_unique<GoToPose>(api::AbsCoord{x, y, theta});
+         return std::make_unique<skills::GoToPose>(x, y, theta); // the skill, head still
        }},
       // The skills, named and parameterised as in behaviour_py/behaviour.py.
       {"GoToPose",

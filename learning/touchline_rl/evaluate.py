@@ -1,7 +1,7 @@
 """Evaluates go-to-pose skills on the same fixed seeded starts over the whole field and
 writes a table (issue 7): the learned policy as the learner runs it, the same policy
 deployed in the C++ behaviour (LearnedGoToPose, reading the policy file), the hand-coded
-GoToPose skill (thesis Algorithm 4.3 with forward-first) and the launcher's goto walker.
+GoToPose skill (thesis Algorithm 4.3 with forward-first).
 
   learning/evaluate [--policy PATH] [--starts 200] [--out DIR]
 """
@@ -58,9 +58,6 @@ def main(argv=None):
         "learned, deployed (C++ LearnedGoToPose)": behaviour_runner(sim, "LearnedGoToPose", distance_mm,
                                                                     heading_rad, MAX_FRAMES, policy_param),
         "hand-coded (C++ GoToPose)": behaviour_runner(sim, "GoToPose", distance_mm, heading_rad, MAX_FRAMES),
-        # Not a behaviour skill: the launcher's walker to kick-off spots (no Python original),
-        # kept as a second reference because it turns while it walks.
-        "hand-coded walker (C++ goto)": behaviour_runner(sim, "goto", distance_mm, heading_rad, MAX_FRAMES),
     }
     results, rows = {}, {}
     for name, run in skills.items():
