@@ -137,6 +137,7 @@ int main(int argc, char** argv) {
      "(33.3 ms) of CPU makes the robot miss frames as on the robot (the last request stays in force)")
     ("walk-config", po::value(&files.walk), "walk parameters file ([walk] section); default: the built-in walk")
     ("kick-config", po::value(&files.kick), "kick and dribble parameters file ([kick], [dribble]); default: the built-in kick")
+    ("head-config", po::value(&files.head), "head joint limits and speed file ([head]); default: the built-in head")
     ("field-config", po::value(&files.field), "the world config whose [field] the robot knows (landmarks for localisation); default: SPL 2011")
     ("perfect-localisation", po::bool_switch(&def.localisation.perfect), "the robot's pose from the truth instead of the filter (the ball still from the camera)")
     ("lcm-url", po::value(&node.lcm_url)->default_value(node.lcm_url),

@@ -23,6 +23,7 @@ RobotDef load_robot_def(const RobotConfigFiles& files, RobotDef def) {
   // Each loader names its file in its errors and bounds every number it reads.
   if (!files.walk.empty()) def.walk = load_walk_def(files.walk);
   if (!files.kick.empty()) def.kick = load_kick_def(files.kick);
+  if (!files.head.empty()) def.head = load_head_def(files.head);
   if (!files.field.empty()) def.localisation.filters.field = localisation::load_field_map(files.field);
   return def;
 }

@@ -47,10 +47,11 @@ TEST(RobotDef, NoFilesGiveTheBuiltInRobot) {
 }
 
 TEST(RobotDef, TheShippedFilesDescribeTheBuiltInRobot) {
-  // config/walk.ini and config/kick.ini hold the struct defaults: a robot made with them
+  // config/walk.ini, kick.ini and head.ini hold the struct defaults: a robot made with them
   // (robot_shim as launched) and one made without (tests, learning) play alike.
   const RobotDef built_in;
-  const RobotDef shipped = load_robot_def({kConfig + "walk.ini", kConfig + "kick.ini", kConfig + "spl2011.ini"});
+  const RobotDef shipped =
+      load_robot_def({kConfig + "walk.ini", kConfig + "kick.ini", kConfig + "spl2011.ini", kConfig + "head.ini"});
   EXPECT_EQ(shipped.walk.period_s, built_in.walk.period_s);
   EXPECT_EQ(shipped.walk.max_turn_rad_s, built_in.walk.max_turn_rad_s);
   EXPECT_EQ(shipped.walk.swing_shape, built_in.walk.swing_shape);
@@ -66,6 +67,10 @@ TEST(RobotDef, TheShippedFilesDescribeTheBuiltInRobot) {
     EXPECT_EQ(loaded.max_bend_rad, fixed.max_bend_rad);
     EXPECT_EQ(loaded.recover_s, fixed.recover_s);
   }
+  EXPECT_EQ(shipped.head.max_yaw_rad, built_in.head.max_yaw_rad);
+  EXPECT_EQ(shipped.head.min_pitch_rad, built_in.head.min_pitch_rad);
+  EXPECT_EQ(shipped.head.max_pitch_rad, built_in.head.max_pitch_rad);
+  EXPECT_EQ(shipped.head.max_speed_rad_s, built_in.head.max_speed_rad_s);
   EXPECT_EQ(shipped.localisation.filters.field.length_mm, built_in.localisation.filters.field.length_mm);
   EXPECT_EQ(shipped.localisation.filters.field.goal_width_mm, built_in.localisation.filters.field.goal_width_mm);
 }
@@ -87,6 +92,10 @@ TEST(RobotDef, EachFileIsReadIntoItsPart) {
   EXPECT_FLOAT_EQ(field.localisation.filters.field.width_mm, 6000);
   EXPECT_FLOAT_EQ(field.localisation.filters.field.goal_width_mm, 1500);
   EXPECT_FLOAT_EQ(field.localisation.filters.field.penalty_mark_distance_mm, 1300);
+
+  const RobotDef head = load_robot_def({"", "", "", write_ini("head", "[head]\nmax_speed_rad_s = 2\n")});
+  EXPECT_FLOAT_EQ(head.head.max_speed_rad_s, 2);
+  EXPECT_FLOAT_EQ(head.head.max_yaw_rad, 2.08f);
 }
 
 TEST(RobotDef, WhatNoFileNamesIsKeptFromTheGivenDef) {
@@ -111,6 +120,7 @@ TEST(RobotDef, ABadFileIsOneLineNamingIt) {
   const std::string bad_walk = write_ini("bad_walk", "[walk]\nperiod_s = -1\n");
   const std::string bad_kick = write_ini("bad_kick", "[kick]\npeak_speed_mm_s = inf\n");
   const std::string bad_field = write_ini("bad_field", "[field]\nlength_mm = 0\n");
+  const std::string bad_head = write_ini("bad_head", "[head]\nmin_pitch_rad = 0.2\n");
   const std::string unknown = write_ini("unknown", "[walk]\nspeed = 1\n");
   for (const auto& [files, path, what] : {
            std::tuple{RobotConfigFiles{missing, "", ""}, missing, "cannot open config file"},
@@ -119,6 +129,8 @@ TEST(RobotDef, ABadFileIsOneLineNamingIt) {
            std::tuple{RobotConfigFiles{bad_walk, "", ""}, bad_walk, "walk.period_s must be in [0.02, 10] (got -1)"},
            std::tuple{RobotConfigFiles{"", bad_kick, ""}, bad_kick, "kick.peak_speed_mm_s must be a finite number"},
            std::tuple{RobotConfigFiles{"", "", bad_field}, bad_field, "field.length_mm must be in (0, "},
+           std::tuple{RobotConfigFiles{"", "", "", missing}, missing, "cannot open config file"},
+           std::tuple{RobotConfigFiles{"", "", "", bad_head}, bad_head, "head.min_pitch_rad must be in [-3.1416, 0] (got 0.2)"},
            std::tuple{RobotConfigFiles{unknown, "", ""}, unknown, "speed"},
        }) {
     const std::string message = error_for(files);

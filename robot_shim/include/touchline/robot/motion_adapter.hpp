@@ -7,19 +7,12 @@
 // after it completes starts another. Reads: blackboard.behaviour.request. Writes:
 // blackboard.motion (active: the latched kick while one runs; kickPhase), the effector.
 #include "touchline/frame.hpp"
+#include "touchline/robot/head_def.hpp"
 #include "touchline/robot/kick_generator.hpp"
 #include "touchline/robot/walk_cycle.hpp"
 #include "touchline/robot_api/blackboard.hpp"
 
 namespace touchline::robot {
-
-/// Head joint limits (Nao) and speed.
-struct HeadDef {
-  float max_yaw_rad = 2.08f;       ///< either side
-  float min_pitch_rad = -0.67f;    ///< up
-  float max_pitch_rad = 0.51f;     ///< down
-  float max_speed_rad_s = 4.0f;    ///< at yawSpeed/pitchSpeed = 1
-};
 
 class MotionAdapter {
  public:

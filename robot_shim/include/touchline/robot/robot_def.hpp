@@ -14,6 +14,7 @@
 
 #include "touchline/frame.hpp"
 #include "touchline/robot/adapters.hpp"
+#include "touchline/robot/head_def.hpp"
 #include "touchline/robot/kick_generator.hpp"
 #include "touchline/robot/localisation/localiser.hpp"
 #include "touchline/robot/motion_adapter.hpp"
@@ -62,7 +63,7 @@ struct RobotDef {
   RobotId id{0, 1};                  ///< team (0 or 1) and player number (1..7)
   WalkDef walk;                      ///< the gait: [walk] of config/walk.ini
   KickDef kick;                      ///< kick and dribble swings: [kick], [dribble] of config/kick.ini
-  HeadDef head;                      ///< the head that points the camera (the camera's view is the world's [camera])
+  HeadDef head;                      ///< the head that points the camera: [head] of config/head.ini
   LocalisationModeDef localisation;  ///< the field it knows ([field] of the world's config), filters or the truth
   BehaviourDef behaviour;            ///< what runs on it
   BehaviourTimingDef timing;         ///< how the behaviour's CPU time counts
@@ -73,10 +74,11 @@ struct RobotConfigFiles {
   std::string walk;  ///< [walk], e.g. config/walk.ini
   std::string kick;  ///< [kick] and [dribble], e.g. config/kick.ini
   std::string field; ///< the world's config (e.g. config/spl2020.ini): its [field], other sections skipped
+  std::string head;  ///< [head], e.g. config/head.ini
 };
 
 /// `def` with each file `files` names read into its part (walk, kick, the field the
-/// localisation knows) by that part's own loader; keys a file leaves out keep their
+/// localisation knows, the head) by that part's own loader; keys a file leaves out keep their
 /// built-in default. Throws ConfigError, one line naming the file ("config/walk.ini:
 /// walk.period_s must be in [0.02, 10] (got -1)").
 RobotDef load_robot_def(const RobotConfigFiles& files, RobotDef def = {});
