@@ -363,7 +363,6 @@ class WorldNode {
     if (!events.empty()) publish_game_state(false); // the game changed: tell the robots and tools at once
   }
 
-  static constexpr int kFramesPerSecond = 30;
   static constexpr int kFinishedRepeats = 5;
   static constexpr int kFinishedGapMs = 10;
   static constexpr int64_t kConfigPeriodUs = 1000000; ///< TL_MATCH while the robots join, wall time

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "touchline/angles.hpp"
+#include "touchline/frame.hpp"
 #include "touchline/random.hpp"
 
 namespace touchline::learning {
@@ -56,9 +57,9 @@ void step(SingleRobotSim& sim, const WalkAction& a) {
 /// The shaping potential in frames (see SarsaLambdaDef).
 double potential(const SarsaLambdaDef& def, const Pose2D& relative) {
   if (def.shaping_forward_mm_s <= 0 || def.shaping_turn_rad_s <= 0) return 0;
-  constexpr double kFramesPerSecond = 30;
-  return -kFramesPerSecond * std::hypot(std::hypot(relative.x_mm, relative.y_mm) / def.shaping_forward_mm_s,
-                                        relative.theta_rad / def.shaping_turn_rad_s);
+  return -static_cast<double>(kFramesPerSecond) *
+         std::hypot(std::hypot(relative.x_mm, relative.y_mm) / def.shaping_forward_mm_s,
+                    relative.theta_rad / def.shaping_turn_rad_s);
 }
 
 std::vector<int> active_cells(const TileQ& q, const Pose2D& relative) {

@@ -10,7 +10,6 @@ namespace touchline::robot {
 
 namespace {
 
-constexpr float kTickS = kMotionTickUs * 1e-6f;
 /// ceil() would turn 18.000002 ticks (float rounding of an exact 18) into 19.
 constexpr float kTickRoundingSlack = 1e-4f;
 
@@ -25,7 +24,7 @@ float ease(float s) {
 /// stays within `peak_rate` (0 for no move).
 int eased_ticks(float distance, float peak_rate) {
   if (!(distance > 0)) return 0;
-  const float ticks = kPi * distance / (2 * peak_rate * kTickS);
+  const float ticks = kPi * distance / (2 * peak_rate * kMotionTick_s);
   return std::max(1, static_cast<int>(std::ceil(ticks - kTickRoundingSlack)));
 }
 
@@ -39,7 +38,7 @@ bool is_kick(api::ActionCommand::ActionType type) {
 } // namespace
 
 int duration_ticks(float seconds) {
-  return std::max(1, static_cast<int>(std::lround(seconds / kTickS)));
+  return std::max(1, static_cast<int>(std::lround(seconds / kMotionTick_s)));
 }
 
 SwingPlan plan_swing(const SwingDef& def, float power, float bend_rad) {
@@ -110,7 +109,7 @@ FeetPose KickGenerator::tick(WalkCycle& walk) {
       break;
     case KickPhase::kPrepare:
       if (!walk.standing()) {
-        walk.tick({}, kTickS); // decelerate and land the feet square; the wait starts after
+        walk.tick({}, kMotionTick_s); // decelerate and land the feet square; the wait starts after
         break;
       }
       if (++ticks_in_phase_ >= duration_ticks(swing_def().prepare_s)) {

@@ -19,7 +19,6 @@ float to_m(float mm) { return mm / 1000.f; }
 float to_mm(float m) { return m * 1000.f; }
 b2Vec2 to_m(float x_mm, float y_mm) { return b2Vec2(to_m(x_mm), to_m(y_mm)); }
 
-constexpr float kTickS = static_cast<float>(kMotionTickUs) / 1e6f;
 // Thickness of the boundary walls beyond the carpet edge (only their inner face matters).
 constexpr float kWallThicknessM = 0.5f;
 // Thickness of the nets, centred on their nominal lines.
@@ -237,8 +236,8 @@ struct World::Impl {
 
   /// velocity = displacement / dt, displacement rotated from the body frame at the tick start.
   static FootVelocity foot_velocity(b2Body* foot, float body_theta, const FootMotion& m) {
-    const b2Vec2 v = rotate(body_theta, b2Vec2(to_m(m.dx_mm) / kTickS, to_m(m.dy_mm) / kTickS));
-    return FootVelocity{foot, v, m.dtheta_rad / kTickS};
+    const b2Vec2 v = rotate(body_theta, b2Vec2(to_m(m.dx_mm) / kMotionTick_s, to_m(m.dy_mm) / kMotionTick_s));
+    return FootVelocity{foot, v, m.dtheta_rad / kMotionTick_s};
   }
 
   void step(const std::vector<TickMotion>& motions) {
@@ -254,7 +253,7 @@ struct World::Impl {
       commands.push_back(foot_velocity(r.right, theta, motions[i].right));
     }
     const int substeps = std::max(1, physics.substeps);
-    const float h = kTickS / static_cast<float>(substeps);
+    const float h = kMotionTick_s / static_cast<float>(substeps);
     for (int s = 0; s < substeps; ++s) {
       // Re-impose the commands each substep: contacts must not leave feet drifting.
       for (const FootVelocity& c : commands) set_velocity(c.foot, c.linear, c.angular);

@@ -53,6 +53,14 @@ constexpr int64_t kMotionTickUs = 10000; ///< 100 Hz motion
 constexpr int kFramesPerCycle = 3;       ///< 3 camera frames (30 Hz) ...
 constexpr int kTicksPerCycle = 10;       ///< ... span exactly 10 motion ticks (100 ms)
 
+/// One motion tick in seconds, for rates (mm/s x tick = mm): 0.01f, the same float however
+/// it is derived (kMotionTickUs / 1e6f and kMotionTickUs * 1e-6f agree).
+constexpr float kMotionTick_s = static_cast<float>(kMotionTickUs) / 1e6f;
+/// Camera frames per simulated second: kFramesPerCycle frames span kTicksPerCycle ticks.
+constexpr int kFramesPerSecond = static_cast<int>(kFramesPerCycle * 1000000 / (kTicksPerCycle * kMotionTickUs));
+static_assert(kFramesPerSecond * kTicksPerCycle * kMotionTickUs == kFramesPerCycle * 1000000,
+              "a whole number of camera frames a second");
+
 /// Index of the first motion tick of camera frame `frame`.
 constexpr int64_t first_tick_of_frame(int64_t frame) {
   return frame * kTicksPerCycle / kFramesPerCycle;
