@@ -248,6 +248,8 @@ class Launcher:
                                 for e in watch.match_events if e.kind == e.PENALTY]
         summary["falls"] = [{"sim_s": e.utime / 1e6, "team": e.team, "player": e.player}
                             for e in watch.match_events if e.kind == e.FALL]
+        summary["set_plays"] = [{"sim_s": e.utime / 1e6, "team": e.team, "what": e.text}
+                                for e in watch.match_events if e.kind == e.SET_PLAY and e.team >= 0]
         summary["shim_deaths"] = keeper.summary()
         summary["launcher_malformed"] = dict(watch.malformed)
         self.report(summary, targets)
@@ -291,6 +293,12 @@ class Launcher:
             kinds[p["kind"]] = kinds.get(p["kind"], 0) + 1
         print("Penalties: " + (", ".join(f"{k} {n}" for k, n in sorted(kinds.items())) or "none")
               + f"; falls: {len(summary['falls'])}")
+        if summary["set_plays"]:
+            set_plays = {}
+            for play in summary["set_plays"]:  # "kick-in for team 1" -> "kick-in"
+                name = play["what"].rsplit(" for team ", 1)[0]
+                set_plays[name] = set_plays.get(name, 0) + 1
+            print("Set plays: " + ", ".join(f"{k} {n}" for k, n in sorted(set_plays.items())))
         last = "kick-off spot off by" if a.behaviour == "goto" else ""
         print(f"{'robot':<12}{'answered':>9}{'missed':>7}{'behaviour CPU µs':>19}{'localisation rms':>20}"
               f"{'penalties':>10}   {'ended at (mm)':<16}{last}")

@@ -86,7 +86,9 @@ class MatchWatch:
 
     def _check_game(self, msg) -> None:
         require(msg.utime >= 0, f"utime {msg.utime}")
-        require(msg.INITIAL <= msg.state <= msg.FINISHED, f"state {msg.state}")
+        require(msg.INITIAL <= msg.state <= msg.STANDBY, f"state {msg.state}")
+        require(msg.SET_PLAY_NONE <= msg.set_play <= msg.SET_PLAY_PENALTY_KICK, f"set play {msg.set_play}")
+        require(msg.set_play == msg.SET_PLAY_NONE or msg.set_play_team in (0, 1), f"set play team {msg.set_play_team}")
         require(all(goals >= 0 for goals in msg.score), f"score {tuple(msg.score)}")
         require(msg.kickoff_team in (0, 1) and msg.first_half in (0, 1) and msg.secs_remaining >= 0,
                 "kick-off team, half or clock out of range")
@@ -99,7 +101,7 @@ class MatchWatch:
 
     def _check_event(self, msg) -> None:
         require(msg.utime >= 0, f"utime {msg.utime}")
-        require(msg.STATE_CHANGE <= msg.kind <= msg.BALL_OUT, f"kind {msg.kind}")
+        require(msg.STATE_CHANGE <= msg.kind <= msg.SET_PLAY, f"kind {msg.kind}")
         require(msg.team in (-1, 0, 1), f"team {msg.team}")
         require(0 <= msg.player <= self._team_size, f"player {msg.player}")
 

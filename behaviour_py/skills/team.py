@@ -2,7 +2,7 @@
 
 Every tick the head runs LookForBall and, every MESSAGE_EVERY_FRAMES frames (counted by its
 own ticks, never wall time), the request carries this robot's team message. The body:
-penalised or fallen: stand (it gets up by itself); INITIAL, SET, FINISHED: stand; READY: walk
+penalised or fallen: stand (it gets up by itself); INITIAL, STANDBY, SET, FINISHED: stand; READY: walk
 to the player number's kick-off position (a fixed legal formation in the own half, outside
 the centre circle: the API does not say which team kicks off); PLAYING: the role's skill,
 roles assigned from the team messages (team_comm.assignRole) unless fixed. A striker, or a

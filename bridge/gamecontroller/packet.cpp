@@ -113,8 +113,7 @@ GameControllerPacket decode_gamecontroller_packet(const void* data, std::size_t 
   if (p.raw_state <= static_cast<int>(GameState::kFinished)) {
     p.game.state = static_cast<GameState>(p.raw_state);
   } else if (p.raw_state == gc::kStateStandby && version >= 18) {
-    p.game.state = GameState::kInitial;
-    p.standby = true;
+    p.game.state = GameState::kStandby;
   } else {
     fail("unknown state " + std::to_string(p.raw_state) + " in version " + std::to_string(version));
   }
@@ -167,6 +166,13 @@ GameControllerPacket decode_gamecontroller_packet(const void* data, std::size_t 
   } else {
     fail("kickingTeam " + std::to_string(kicking) + " is neither team (" + std::to_string(p.team_numbers[0]) +
          ", " + std::to_string(p.team_numbers[1]) + ")");
+  }
+
+  if (p.set_play > static_cast<int>(SetPlay::kPenaltyKick)) fail("unknown setPlay " + std::to_string(p.set_play));
+  p.game.set_play = static_cast<SetPlay>(p.set_play);
+  if (p.game.set_play != SetPlay::kNone) {
+    if (!p.kicking_team) fail("setPlay " + std::to_string(p.set_play) + " with no kicking team");
+    p.game.set_play_team = *p.kicking_team;
   }
   return p;
 }

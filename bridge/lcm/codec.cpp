@@ -80,6 +80,14 @@ FootMotion from_lcm(const foot_motion_t& m, const std::string& what) {
   return {m.dx_mm, m.dy_mm, m.dtheta_rad};
 }
 
+/// A set play names its team; with none the team is not read (the frame says -1).
+void check_set_play(int set_play, int team, const std::string& what) {
+  if (set_play < 0 || set_play > static_cast<int>(SetPlay::kPenaltyKick))
+    throw MalformedMessage(what + ": unknown set_play " + std::to_string(set_play));
+  if (set_play != static_cast<int>(SetPlay::kNone) && team != 0 && team != 1)
+    throw MalformedMessage(what + ": set_play_team " + std::to_string(team) + " is not 0 or 1");
+}
+
 } // namespace
 
 std::string act_channel(RobotId id) {
@@ -103,6 +111,8 @@ sense_t to_lcm(const SenseFrame& frame) {
   m.kickoff_team = static_cast<int8_t>(frame.game.kickoff_team);
   m.score[0] = static_cast<int8_t>(frame.game.score[0]);
   m.score[1] = static_cast<int8_t>(frame.game.score[1]);
+  m.set_play = static_cast<int8_t>(frame.game.set_play);
+  m.set_play_team = static_cast<int8_t>(frame.game.set_play_team);
   m.num_robots = static_cast<int16_t>(frame.robots.size());
   for (const RobotSense& r : frame.robots) {
     robot_sense_t s;
@@ -150,8 +160,9 @@ SenseFrame from_lcm(const sense_t& m) {
   if (m.utime != frame_start_utime(m.frame))
     throw MalformedMessage(what + ": at " + std::to_string(m.utime) + " us is not a frame of a match (it starts at " +
                            std::to_string(frame_start_utime(m.frame)) + " us)");
-  if (m.game_state < 0 || m.game_state > static_cast<int8_t>(GameState::kFinished))
+  if (m.game_state < 0 || m.game_state > static_cast<int8_t>(GameState::kStandby))
     throw MalformedMessage(what + ": unknown game_state " + std::to_string(m.game_state));
+  check_set_play(m.set_play, m.set_play_team, what);
   if (m.kickoff_team < 0 || m.kickoff_team > 1)
     throw MalformedMessage(what + ": kickoff_team " + std::to_string(m.kickoff_team) + " is not 0 or 1");
   if (m.score[0] < 0 || m.score[1] < 0)
@@ -165,6 +176,8 @@ SenseFrame from_lcm(const sense_t& m) {
   frame.game.first_half = m.first_half;
   frame.game.kickoff_team = m.kickoff_team;
   frame.game.score = {{m.score[0], m.score[1]}};
+  frame.game.set_play = static_cast<SetPlay>(m.set_play);
+  frame.game.set_play_team = frame.game.set_play == SetPlay::kNone ? -1 : m.set_play_team;
   std::array<std::array<bool, kMaxTeamSize + 1>, 2> listed{};
   for (const robot_sense_t& s : m.robots) {
     check_id(s.team, s.player, what);

@@ -187,7 +187,7 @@ api::Blackboard from_snapshot(const blackboard_snapshot_t& m) {
 
   auto& gc = bb.gameController;
   gc.state = static_cast<api::GameState>(
-      check.range(m.game_state, 0, static_cast<int>(api::GameState::FINISHED), "game_state"));
+      check.range(m.game_state, 0, static_cast<int>(api::GameState::STANDBY), "game_state"));
   gc.team = check.range(m.gc_team, 0, 1, "gc_team");
   gc.playerNumber = check.range(m.player_number, 1, kMaxTeamSize, "player_number");
   gc.penalised = m.penalised;

@@ -341,6 +341,8 @@ class WorldNode {
     msg.kickoff_team = static_cast<int8_t>(game.kickoff_team);
     msg.score[0] = static_cast<int8_t>(game.score[0]);
     msg.score[1] = static_cast<int8_t>(game.score[1]);
+    msg.set_play = static_cast<int8_t>(game.set_play);
+    msg.set_play_team = static_cast<int8_t>(game.set_play_team);
     publish(kGameChannel, msg);
   }
 
@@ -354,9 +356,11 @@ class WorldNode {
       msg.utime = event.utime;
       msg.kind = static_cast<int8_t>(event.kind);
       msg.team = static_cast<int8_t>(event.team);
-      msg.player = static_cast<int8_t>(event.robot.player);
+      const bool about_a_robot = event.kind == sim::MatchEvent::Kind::kPenalty ||
+                                 event.kind == sim::MatchEvent::Kind::kReleased ||
+                                 event.kind == sim::MatchEvent::Kind::kFall;
+      msg.player = about_a_robot ? static_cast<int8_t>(event.robot.player) : int8_t{0};
       msg.text = event.text;
-      if (event.kind == sim::MatchEvent::Kind::kStateChange || event.kind == sim::MatchEvent::Kind::kBallOut) msg.player = 0;
       publish(kEventChannel, msg);
       if (def_.progress) log_ << "sim_world: " << describe(event) << "\n" << std::flush;
     }

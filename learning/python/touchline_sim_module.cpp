@@ -29,7 +29,7 @@ learning::SingleRobotDef make_def(const std::string& world_config, const std::ve
   learning::SingleRobotDef def;
   def.world = sim::load_world_config(world_config, overrides);
   // No field file: the in-process match gives the robot the world's field, overrides and all.
-  def.robot = robot::load_robot_def({walk_config, kick_config, ""}, def.robot);
+  def.robot = robot::load_robot_def({walk_config, kick_config, "", ""}, def.robot);
   def.robot.localisation.perfect = perfect_localisation;
   return def;
 }

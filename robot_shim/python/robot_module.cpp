@@ -109,7 +109,15 @@ void define_blackboard(py::module_& m) {
       .value("READY", GameState::READY)
       .value("SET", GameState::SET)
       .value("PLAYING", GameState::PLAYING)
-      .value("FINISHED", GameState::FINISHED);
+      .value("FINISHED", GameState::FINISHED)
+      .value("STANDBY", GameState::STANDBY);
+  py::enum_<SetPlay>(m, "SetPlay")
+      .value("NONE", SetPlay::NONE)
+      .value("GOAL_KICK", SetPlay::GOAL_KICK)
+      .value("PUSHING_FREE_KICK", SetPlay::PUSHING_FREE_KICK)
+      .value("CORNER_KICK", SetPlay::CORNER_KICK)
+      .value("KICK_IN", SetPlay::KICK_IN)
+      .value("PENALTY_KICK", SetPlay::PENALTY_KICK);
 
   // Read-only views: behaviour code reads the Blackboard, only adapters write it.
   py::class_<MotionBlackboard> motion(m, "MotionBlackboard");
@@ -139,7 +147,9 @@ void define_blackboard(py::module_& m) {
       .def_readonly("playerNumber", &GameControllerBlackboard::playerNumber)
       .def_readonly("penalised", &GameControllerBlackboard::penalised)
       .def_readonly("score", &GameControllerBlackboard::score)
-      .def_readonly("secsRemaining", &GameControllerBlackboard::secsRemaining);
+      .def_readonly("secsRemaining", &GameControllerBlackboard::secsRemaining)
+      .def_readonly("setPlay", &GameControllerBlackboard::setPlay)
+      .def_readonly("setPlayTeam", &GameControllerBlackboard::setPlayTeam);
   py::class_<TeamMessage>(m, "TeamMessage")
       .def_readonly("playerNumber", &TeamMessage::playerNumber)
       .def_readonly("utime", &TeamMessage::utime)

@@ -5,15 +5,46 @@
 
 namespace touchline::robot {
 
+namespace {
+
+/// A switch, not a cast: the compiler checks that every state is mapped.
+api::GameState to_api(GameState state) {
+  switch (state) {
+    case GameState::kInitial: return api::GameState::INITIAL;
+    case GameState::kReady: return api::GameState::READY;
+    case GameState::kSet: return api::GameState::SET;
+    case GameState::kPlaying: return api::GameState::PLAYING;
+    case GameState::kFinished: return api::GameState::FINISHED;
+    case GameState::kStandby: return api::GameState::STANDBY;
+  }
+  return api::GameState::INITIAL;
+}
+
+api::SetPlay to_api(SetPlay set_play) {
+  switch (set_play) {
+    case SetPlay::kNone: return api::SetPlay::NONE;
+    case SetPlay::kGoalKick: return api::SetPlay::GOAL_KICK;
+    case SetPlay::kPushingFreeKick: return api::SetPlay::PUSHING_FREE_KICK;
+    case SetPlay::kCornerKick: return api::SetPlay::CORNER_KICK;
+    case SetPlay::kKickIn: return api::SetPlay::KICK_IN;
+    case SetPlay::kPenaltyKick: return api::SetPlay::PENALTY_KICK;
+  }
+  return api::SetPlay::NONE;
+}
+
+} // namespace
+
 void write_game_controller(const SenseFrame& frame, const RobotSense& sense, api::Blackboard& blackboard) {
   blackboard.utime = frame.utime;
   auto& gc = blackboard.gameController;
-  gc.state = static_cast<api::GameState>(frame.game.state);
+  gc.state = to_api(frame.game.state);
   gc.team = sense.id.team;
   gc.playerNumber = sense.id.player;
   gc.penalised = sense.penalised;
   gc.score = frame.game.score;
   gc.secsRemaining = frame.game.secs_remaining;
+  gc.setPlay = to_api(frame.game.set_play);
+  gc.setPlayTeam = frame.game.set_play_team;
 }
 
 void write_vision(const SenseFrame& frame, const RobotSense& sense, api::Blackboard& blackboard) {

@@ -34,6 +34,12 @@ bool Field::in_goal_box(int defending_team, float x_mm, float y_mm) const {
          std::fabs(y_mm) <= def_.goal_box_width_mm / 2;
 }
 
+bool Field::in_penalty_area(int defending_team, float x_mm, float y_mm) const {
+  if (def_.penalty_area_length_mm <= 0 || def_.penalty_area_width_mm <= 0) return in_goal_box(defending_team, x_mm, y_mm);
+  const float depth = -goal_side(defending_team) * (x_mm - goal_line_x(defending_team));
+  return depth >= 0 && depth <= def_.penalty_area_length_mm && std::fabs(y_mm) <= def_.penalty_area_width_mm / 2;
+}
+
 bool Field::in_goal(int defending_team, float x_mm, float y_mm) const {
   // Positive behind the goal line, towards the net's back.
   const float behind = goal_side(defending_team) * (x_mm - goal_line_x(defending_team));

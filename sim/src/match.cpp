@@ -192,6 +192,9 @@ void Match::advance() {
       robot.pending.pop_front();
     }
     world_.step(motions);
+    for (int toucher : world_.ball_touches())
+      for (const auto& [id, robot] : on_field_)
+        if (robot.world_index == toucher) touched_by_team_[static_cast<size_t>(id.team)] = true;
   }
   for (const auto& [id, robot] : on_field_)
     if (Member* member = roster_.find(id); member->answered_frame != frame_) ++member->frames_missed;
@@ -201,8 +204,10 @@ void Match::advance() {
 
 void Match::judge() {
   for (auto& [id, robot] : on_field_) robot.stopped = false;
+  const std::array<bool, 2> touched = std::exchange(touched_by_team_, {{false, false}});
   if (!referee_) return;
   RefereeInput input;
+  input.touched_by_team = touched;
   input.utime = utime();
   input.ball = world_.ball();
   const int toucher = world_.last_ball_touch();
@@ -237,6 +242,11 @@ void Match::carry_out(const RefereeDecision& d) {
     if (d.ball->why == BallPlacement::Why::kBallOut)
       events_.push_back({utime(), MatchEvent::Kind::kBallOut, {}, -1, "ball out, put back"});
   }
+  for (const SetPlayChange& change : d.set_plays)
+    events_.push_back({change.utime, MatchEvent::Kind::kSetPlay, {}, change.team,
+                       change.set_play == SetPlay::kNone
+                           ? std::string("set play over")
+                           : std::string(to_string(change.set_play)) + " for team " + std::to_string(change.team)});
   for (RobotId id : d.stopped)
     if (auto robot = on_field_.find(id); robot != on_field_.end()) robot->second.stopped = true;
 }

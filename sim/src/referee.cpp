@@ -23,7 +23,7 @@ const char* to_string(PenaltyKind kind) {
 
 bool RefereeDecision::empty() const {
   return state_changes.empty() && goals.empty() && penalties.empty() && released.empty() &&
-         placements.empty() && !ball && stopped.empty();
+         placements.empty() && !ball && stopped.empty() && set_plays.empty();
 }
 
 Referee::Referee(const Field& field, const RulesDef& rules, int team_size, float ball_diameter_mm)
@@ -56,7 +56,10 @@ RefereeDecision Referee::update(const RefereeInput& in) {
 
   // The whistle comes first: a ball that goes in after the half ran out is no goal.
   const bool goal = state_ == GameState::kPlaying && check_goal(in, d);
-  if (state_ == GameState::kPlaying && !goal && rules_.ball_out) check_ball_out(in, d);
+  if (state_ == GameState::kPlaying && !goal) {
+    check_set_play_over(in, d);
+    if (rules_.ball_out) rules_.set_plays ? award_ball_out(in, d) : check_ball_out(in, d);
+  }
   const bool robots_walk = state_ == GameState::kReady || state_ == GameState::kSet ||
                            state_ == GameState::kPlaying;
   if (robots_walk && rules_.leaving_field) check_leaving_field(in.utime, robots, d);
@@ -73,6 +76,8 @@ GameInfo Referee::info() const {
   info.first_half = first_half_;
   info.kickoff_team = kickoff_team_;
   info.score = score_;
+  info.set_play = set_play_;
+  info.set_play_team = set_play_team_;
   const int64_t left_us = state_ == GameState::kFinished ? 0 : std::max<int64_t>(0, half_us() - played_us_);
   info.secs_remaining = static_cast<int>((left_us + 999999) / 1000000); // whole seconds, rounded up
   return info;
@@ -108,6 +113,7 @@ void Referee::run_clock(int64_t now, const BallTruth& ball, Robots& robots, Refe
 int64_t Referee::next_timed_event() const {
   switch (state_) {
     case GameState::kInitial: return state_since_utime_ + detail::to_us(rules_.initial_s);
+    case GameState::kStandby: return state_since_utime_ + detail::to_us(rules_.standby_s);
     case GameState::kReady: return state_since_utime_ + detail::to_us(rules_.ready_s);
     case GameState::kSet: return state_since_utime_ + detail::to_us(rules_.set_s);
     case GameState::kPlaying: return clock_utime_ + (half_us() - played_us_);
@@ -118,7 +124,8 @@ int64_t Referee::next_timed_event() const {
 
 void Referee::on_timer(int64_t at, const BallTruth& ball, Robots& robots, RefereeDecision& d) {
   switch (state_) {
-    case GameState::kInitial: enter(GameState::kReady, at, d); break;
+    case GameState::kInitial: enter(rules_.standby_s > 0 ? GameState::kStandby : GameState::kReady, at, d); break;
+    case GameState::kStandby: enter(GameState::kReady, at, d); break;
     case GameState::kReady:
       enter(GameState::kSet, at, d);
       place_for_kickoff(robots, d);
@@ -134,6 +141,7 @@ void Referee::on_timer(int64_t at, const BallTruth& ball, Robots& robots, Refere
 }
 
 void Referee::enter(GameState to, int64_t at, RefereeDecision& d) {
+  if (to != GameState::kPlaying) end_set_play(at, d); // a set play is part of PLAYING
   d.state_changes.push_back(StateChange{state_, to, at});
   state_ = to;
   state_since_utime_ = at;

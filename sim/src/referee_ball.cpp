@@ -37,48 +37,62 @@ bool Referee::check_goal(const RefereeInput& in, RefereeDecision& d) {
   return false;
 }
 
-// Where the ball goes back (documented simplification of SPL 2011): to the point where it
-// crossed the line, moved ball_out_setback_mm along x towards the goal of the team that
-// touched it last (it loses ground), then ball_out_inset_mm inside the line it crossed.
-// Unknown last touch: where it crossed. The crossing point is traced back along the
-// ball's velocity, since the referee sees the ball only once per frame.
-void Referee::check_ball_out(const RefereeInput& in, RefereeDecision& d) const {
-  const BallTruth& b = in.ball;
+std::optional<Referee::BallCrossing> Referee::ball_crossing(const BallTruth& b) const {
   const float hl = field_.half_length(), hw = field_.half_width(), r = ball_radius_mm_;
   const bool past_goal_line = std::fabs(b.x_mm) > hl + r; // wholly past: edges count as in
   const bool past_touchline = std::fabs(b.y_mm) > hw + r;
-  if (!past_goal_line && !past_touchline) return;
+  if (!past_goal_line && !past_touchline) return std::nullopt;
 
   const float sx = detail::sign_of(b.x_mm), sy = detail::sign_of(b.y_mm);
   const float since_x = time_since_crossing(std::fabs(b.x_mm) - hl, b.vx_mm_s, sx);
   const float since_y = time_since_crossing(std::fabs(b.y_mm) - hw, b.vy_mm_s, sy);
-  bool over_touchline = past_touchline;
+  BallCrossing crossing;
+  crossing.over_touchline = past_touchline;
   if (past_goal_line && past_touchline) {
     // Out over a corner: it left over the line it crossed first (or, with no motion to
     // tell by, the one it is farther past).
-    over_touchline = (std::isinf(since_x) && std::isinf(since_y))
-                         ? std::fabs(b.y_mm) - hw > std::fabs(b.x_mm) - hl
-                         : since_y > since_x;
+    crossing.over_touchline = (std::isinf(since_x) && std::isinf(since_y))
+                                  ? std::fabs(b.y_mm) - hw > std::fabs(b.x_mm) - hl
+                                  : since_y > since_x;
   }
+  if (crossing.over_touchline) {
+    const float crossed_x = std::isinf(since_y) ? b.x_mm : b.x_mm - b.vx_mm_s * since_y;
+    crossing.x_mm = std::clamp(crossed_x, -hl, hl);
+    crossing.y_mm = sy * hw;
+  } else {
+    const float crossed_y = std::isinf(since_x) ? b.y_mm : b.y_mm - b.vy_mm_s * since_x;
+    crossing.x_mm = sx * hl;
+    crossing.y_mm = std::clamp(crossed_y, -hw, hw);
+  }
+  return crossing;
+}
+
+// Where the ball goes back (documented simplification of SPL 2011): to the point where it
+// crossed the line, moved ball_out_setback_mm along x towards the goal of the team that
+// touched it last (it loses ground), then ball_out_inset_mm inside the line it crossed.
+// Unknown last touch: where it crossed.
+void Referee::check_ball_out(const RefereeInput& in, RefereeDecision& d) const {
+  const auto crossing = ball_crossing(in.ball);
+  if (!crossing) return;
+  const float hl = field_.half_length(), hw = field_.half_width(), r = ball_radius_mm_;
   const float setback = in.last_touch_team == 0   ? -rules_.ball_out_setback_mm
                         : in.last_touch_team == 1 ? rules_.ball_out_setback_mm
                                                   : 0.f;
   const float inset = rules_.ball_out_inset_mm;
   BallPlacement put{BallPlacement::Why::kBallOut, 0.f, 0.f};
-  if (over_touchline) {
-    const float crossed_x = std::isinf(since_y) ? b.x_mm : b.x_mm - b.vx_mm_s * since_y;
-    put.x_mm = std::clamp(std::clamp(crossed_x, -hl, hl) + setback, -hl, hl);
-    put.y_mm = sy * (hw - inset);
+  if (crossing->over_touchline) {
+    put.x_mm = std::clamp(crossing->x_mm + setback, -hl, hl);
+    put.y_mm = detail::sign_of(crossing->y_mm) * (hw - inset);
   } else {
-    const float crossed_y = std::isinf(since_x) ? b.y_mm : b.y_mm - b.vy_mm_s * since_x;
+    const float sx = detail::sign_of(crossing->x_mm);
     put.x_mm = std::clamp(sx * hl + setback, -(hl - inset), hl - inset);
-    put.y_mm = std::clamp(crossed_y, -hw, hw);
+    put.y_mm = crossing->y_mm;
     // Put back on the goal line by its own goal, the ball would sit among the posts;
     // move it out along the line, clear of the post.
     const FieldDef& f = field_.def();
     const float clear_of_post = f.goal_width_mm / 2 + f.goal_post_diameter_mm / 2 + r;
     if (std::fabs(put.x_mm) > hl - f.goal_post_diameter_mm / 2 - r && std::fabs(put.y_mm) < clear_of_post)
-      put.y_mm = detail::sign_of(crossed_y) * clear_of_post;
+      put.y_mm = detail::sign_of(crossing->y_mm) * clear_of_post;
   }
   d.ball = put;
 }

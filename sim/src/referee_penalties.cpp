@@ -82,6 +82,7 @@ void Referee::check_collisions(int64_t now, const BallTruth& ball, const Robots&
         continue;
       penalise(pusher.id, PenaltyKind::kPushing, now, d);
       last_push_utime_[key] = now;
+      if (rules_.set_plays) award_foul(pusher, now, d);
     }
   }
 }

@@ -10,6 +10,7 @@ void bind(IniSchema& s, RulesDef& d) {
       .bind("rules.fall_probability", &d.fall_probability, "chance a pushed robot falls, 0..1")
       .bind("rules.getup_s", &d.getup_s, "a fallen robot lies this long, s")
       .bind("rules.initial_s", &d.initial_s, "INITIAL before READY of each half, s")
+      .bind("rules.standby_s", &d.standby_s, "STANDBY between INITIAL and READY, s (0: none)")
       .bind("rules.ready_s", &d.ready_s, "READY, robots walk to kick-off positions, s")
       .bind("rules.set_s", &d.set_s, "SET, robots stand until the whistle, s")
       .bind("rules.half_s", &d.half_s, "playing time of a half, s")
@@ -25,11 +26,14 @@ void bind(IniSchema& s, RulesDef& d) {
       .bind("rules.manual_placement", &d.manual_placement, "place robots not in legal positions at SET")
       .bind("rules.ball_out", &d.ball_out, "put back a ball that left the field")
       .bind("rules.ball_out_setback_mm", &d.ball_out_setback_mm, "towards the last toucher's goal, mm")
-      .bind("rules.ball_out_inset_mm", &d.ball_out_inset_mm, "inside the line crossed, mm");
+      .bind("rules.ball_out_inset_mm", &d.ball_out_inset_mm, "inside the line crossed, mm")
+      .bind("rules.set_plays", &d.set_plays, "kick-ins, goal and corner kicks, pushing free and penalty kicks")
+      .bind("rules.set_play_s", &d.set_play_s, "a set play ends when its team touches the ball or after this, s");
 }
 
 void validate(const RulesDef& d) {
   require_non_negative("rules.initial_s", d.initial_s);
+  require_non_negative("rules.standby_s", d.standby_s);
   require_non_negative("rules.ready_s", d.ready_s);
   require_non_negative("rules.set_s", d.set_s);
   require_positive("rules.half_s", d.half_s);
@@ -42,6 +46,7 @@ void validate(const RulesDef& d) {
   require_non_negative("rules.leave_field_margin_mm", d.leave_field_margin_mm);
   require_non_negative("rules.ball_out_setback_mm", d.ball_out_setback_mm);
   require_non_negative("rules.ball_out_inset_mm", d.ball_out_inset_mm);
+  require_positive("rules.set_play_s", d.set_play_s);
   require_non_negative("rules.getup_s", d.getup_s);
   require_fraction("rules.fall_probability", d.fall_probability);
 }

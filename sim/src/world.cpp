@@ -46,18 +46,23 @@ b2PolygonShape skinned_box(b2Vec2 half, b2Vec2 centre = b2Vec2(0, 0)) {
 
 /// Box2D mixes restitution as the max of the pair, which would make the ball bounce off
 /// a soft net as hard as off a foot. A static part's own restitution decides instead.
-/// Also notes which robot's foot touched the ball last (the referee's ball-out rule).
+/// Also notes which robots' feet began touching the ball (the referee's ball-out rule and
+/// set plays).
 class ContactRules : public b2ContactListener {
  public:
   const b2Body* ball = nullptr;
   int last_touch_robot = -1; ///< robot index, -1: none yet
+  std::vector<int> touches;  ///< robot indices whose feet began touching the ball this step
 
   void BeginContact(b2Contact* contact) override {
     const b2Fixture* a = contact->GetFixtureA();
     const b2Fixture* b = contact->GetFixtureB();
     const b2Fixture* other = a->GetBody() == ball ? b : b->GetBody() == ball ? a : nullptr;
     // Feet carry their robot in a negative group index (see add_foot).
-    if (other && other->GetFilterData().groupIndex < 0) last_touch_robot = -other->GetFilterData().groupIndex - 1;
+    if (other && other->GetFilterData().groupIndex < 0) {
+      last_touch_robot = -other->GetFilterData().groupIndex - 1;
+      touches.push_back(last_touch_robot);
+    }
   }
 
   void PreSolve(b2Contact* contact, const b2Manifold*) override {
@@ -244,6 +249,7 @@ struct World::Impl {
     if (motions.size() != robots.size())
       throw std::invalid_argument("World::step: " + std::to_string(motions.size()) +
                                   " motions for " + std::to_string(robots.size()) + " robots");
+    contact_rules.touches.clear();
     std::vector<FootVelocity> commands;
     commands.reserve(2 * robots.size());
     for (std::size_t i = 0; i < robots.size(); ++i) {
@@ -310,6 +316,8 @@ void World::step(const std::vector<TickMotion>& motions) { impl_->step(motions);
 int World::robot_count() const { return static_cast<int>(impl_->robots.size()); }
 
 int World::last_ball_touch() const { return impl_->contact_rules.last_touch_robot; }
+
+const std::vector<int>& World::ball_touches() const { return impl_->contact_rules.touches; }
 
 RobotTruth World::robot(int index) const {
   const Impl::Robot& r = impl_->robot_at(index);

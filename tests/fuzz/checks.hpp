@@ -80,8 +80,12 @@ inline Verdict check_gamecontroller(const Bytes& bytes, const sim::GameControlle
     return {false, std::string("\"") + e.what() + "\" is not a GameControllerError, on " + hex(bytes)};
   }
   const auto state = static_cast<int>(p.game.state);
-  const bool consistent = state >= 0 && state <= static_cast<int>(GameState::kFinished) &&
-                          (!p.standby || p.version == 18) &&
+  const bool standby = p.game.state == GameState::kStandby;
+  const bool set_play = p.game.set_play != SetPlay::kNone;
+  const bool consistent = state >= 0 && state <= static_cast<int>(GameState::kStandby) &&
+                          (!standby || p.version == 18) &&
+                          (set_play ? p.kicking_team && p.game.set_play_team == *p.kicking_team
+                                    : p.game.set_play_team == -1) &&
                           (p.game.kickoff_team == 0 || p.game.kickoff_team == 1) &&
                           (!p.kicking_team || *p.kicking_team == p.game.kickoff_team) &&
                           p.team_numbers[0] != p.team_numbers[1] &&

@@ -76,18 +76,18 @@ TEST(RobotDef, TheShippedFilesDescribeTheBuiltInRobot) {
 }
 
 TEST(RobotDef, EachFileIsReadIntoItsPart) {
-  const RobotDef walk = load_robot_def({write_ini("walk", "[walk]\nperiod_s = 0.6\n"), "", ""});
+  const RobotDef walk = load_robot_def({write_ini("walk", "[walk]\nperiod_s = 0.6\n"), "", "", ""});
   EXPECT_FLOAT_EQ(walk.walk.period_s, 0.6f);
   EXPECT_FLOAT_EQ(walk.walk.max_forward_mm_s, 300); // a key the file leaves out keeps its default
   EXPECT_FLOAT_EQ(walk.kick.kick.peak_speed_mm_s, 1600);
 
-  const RobotDef kick = load_robot_def({"", write_ini("kick", "[kick]\npeak_speed_mm_s = 2000\n[dribble]\nrecover_s = 0.3\n"), ""});
+  const RobotDef kick = load_robot_def({"", write_ini("kick", "[kick]\npeak_speed_mm_s = 2000\n[dribble]\nrecover_s = 0.3\n"), "", ""});
   EXPECT_FLOAT_EQ(kick.kick.kick.peak_speed_mm_s, 2000);
   EXPECT_FLOAT_EQ(kick.kick.dribble.recover_s, 0.3f);
   EXPECT_FLOAT_EQ(kick.kick.dribble.peak_speed_mm_s, 900);
   EXPECT_FLOAT_EQ(kick.walk.period_s, 0.5f);
 
-  const RobotDef field = load_robot_def({"", "", kConfig + "spl2020.ini"}); // the world's file, other sections skipped
+  const RobotDef field = load_robot_def({"", "", kConfig + "spl2020.ini", ""}); // the world's file, other sections skipped
   EXPECT_FLOAT_EQ(field.localisation.filters.field.length_mm, 9000);
   EXPECT_FLOAT_EQ(field.localisation.filters.field.width_mm, 6000);
   EXPECT_FLOAT_EQ(field.localisation.filters.field.goal_width_mm, 1500);
@@ -105,7 +105,7 @@ TEST(RobotDef, WhatNoFileNamesIsKeptFromTheGivenDef) {
   given.kick.kick.recover_s = 0.2f;
   given.localisation.perfect = true;
   given.behaviour = {"py:striker", {{"skill", "GoToBall"}}, "/somewhere"};
-  const RobotDef def = load_robot_def({"", write_ini("kick_only", "[kick]\nprepare_s = 0.5\n"), ""}, given);
+  const RobotDef def = load_robot_def({"", write_ini("kick_only", "[kick]\nprepare_s = 0.5\n"), "", ""}, given);
   EXPECT_EQ(def.id, (RobotId{1, 5}));
   EXPECT_FLOAT_EQ(def.walk.max_forward_mm_s, 250);
   EXPECT_FLOAT_EQ(def.kick.kick.prepare_s, 0.5f);
@@ -123,15 +123,15 @@ TEST(RobotDef, ABadFileIsOneLineNamingIt) {
   const std::string bad_head = write_ini("bad_head", "[head]\nmin_pitch_rad = 0.2\n");
   const std::string unknown = write_ini("unknown", "[walk]\nspeed = 1\n");
   for (const auto& [files, path, what] : {
-           std::tuple{RobotConfigFiles{missing, "", ""}, missing, "cannot open config file"},
-           std::tuple{RobotConfigFiles{"", missing, ""}, missing, "cannot open config file"},
-           std::tuple{RobotConfigFiles{"", "", missing}, missing, "cannot open config file"},
-           std::tuple{RobotConfigFiles{bad_walk, "", ""}, bad_walk, "walk.period_s must be in [0.02, 10] (got -1)"},
-           std::tuple{RobotConfigFiles{"", bad_kick, ""}, bad_kick, "kick.peak_speed_mm_s must be a finite number"},
-           std::tuple{RobotConfigFiles{"", "", bad_field}, bad_field, "field.length_mm must be in (0, "},
+           std::tuple{RobotConfigFiles{missing, "", "", ""}, missing, "cannot open config file"},
+           std::tuple{RobotConfigFiles{"", missing, "", ""}, missing, "cannot open config file"},
+           std::tuple{RobotConfigFiles{"", "", missing, ""}, missing, "cannot open config file"},
+           std::tuple{RobotConfigFiles{bad_walk, "", "", ""}, bad_walk, "walk.period_s must be in [0.02, 10] (got -1)"},
+           std::tuple{RobotConfigFiles{"", bad_kick, "", ""}, bad_kick, "kick.peak_speed_mm_s must be a finite number"},
+           std::tuple{RobotConfigFiles{"", "", bad_field, ""}, bad_field, "field.length_mm must be in (0, "},
            std::tuple{RobotConfigFiles{"", "", "", missing}, missing, "cannot open config file"},
            std::tuple{RobotConfigFiles{"", "", "", bad_head}, bad_head, "head.min_pitch_rad must be in [-3.1416, 0] (got 0.2)"},
-           std::tuple{RobotConfigFiles{unknown, "", ""}, unknown, "speed"},
+           std::tuple{RobotConfigFiles{unknown, "", "", ""}, unknown, "speed"},
        }) {
     const std::string message = error_for(files);
     EXPECT_EQ(message.rfind(path, 0), 0u) << message; // starts with the file

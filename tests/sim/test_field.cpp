@@ -81,6 +81,22 @@ TEST(Field, GoalBoxIsInFrontOfEachTeamsOwnGoal) {
   }
 }
 
+TEST(Field, PenaltyAreaIsTheModernAreaOrTheGoalBoxWithoutOne) {
+  FieldDef def = modern_field();
+  def.penalty_area_length_mm = 1650;
+  def.penalty_area_width_mm = 4000;
+  const Field modern(def);
+  const float hl = modern.half_length();
+  EXPECT_TRUE(modern.in_penalty_area(0, -hl + 1650, 2000));
+  EXPECT_FALSE(modern.in_penalty_area(0, -hl + 1651, 0));
+  EXPECT_FALSE(modern.in_penalty_area(0, -hl + 800, 2001));
+  EXPECT_TRUE(modern.in_penalty_area(1, hl - 1000, -1900));
+  EXPECT_FALSE(modern.in_penalty_area(1, -hl + 1000, 0)); // the other team's
+  const Field old(FieldDef{}); // 2011: no penalty area, the goal box (600 x 2200) serves
+  EXPECT_TRUE(old.in_penalty_area(0, -old.half_length() + 600, 1100));
+  EXPECT_FALSE(old.in_penalty_area(0, -old.half_length() + 601, 0));
+}
+
 TEST(Field, InGoalIsBehindTheLineBetweenTheNets) {
   const Field field; // goal width 1400, depth 500
   EXPECT_TRUE(field.in_goal(0, -3100, 0));

@@ -236,6 +236,37 @@ TEST(Match, RefereeHoldsRobotsStillInInitialAndSetAndTellsTheGame) {
   EXPECT_EQ(events.front().utime, 1000000); // exactly when INITIAL ran out
 }
 
+TEST(Match, ABallOutWithSetPlaysIsAKickInTheRobotsSenseAndItsTeamsTouchEndsIt) {
+  sim::WorldConfig config = refereed_config();
+  config.rules.set_plays = true;
+  sim::Match match(config);
+  match.join({0, 1}, 9, 0);
+  match.join({1, 1}, 8, 0);
+  match.start();
+  while (match.game().state != GameState::kPlaying) match.advance();
+  const float hw = config.field.width_mm / 2;
+  match.world().place_ball(-500, hw + 100, 0, 0); // wholly over team 0's side of the +y touchline
+  match.advance();
+  const GameInfo game = match.sense().game;
+  EXPECT_EQ(game.set_play, SetPlay::kKickIn);
+  EXPECT_EQ(game.set_play_team, 0); // nobody touched it: the team whose half it left from
+  EXPECT_FLOAT_EQ(match.world().ball().y_mm, hw);
+  std::vector<sim::MatchEvent> events = match.take_events();
+  ASSERT_FALSE(events.empty());
+  EXPECT_EQ(events.back().kind, sim::MatchEvent::Kind::kSetPlay);
+  EXPECT_EQ(events.back().team, 0);
+  EXPECT_EQ(events.back().text, "kick-in for team 0");
+
+  // Team 0's robot walks its foot into the ball: the set play is over.
+  const sim::RobotTruth red = match.truth().robots[0].truth;
+  match.world().place_ball(red.left_foot.x_mm + 120, red.left_foot.y_mm, -2000, 0);
+  for (int f = 0; f < 10 && match.game().set_play != SetPlay::kNone; ++f) match.advance();
+  EXPECT_EQ(match.game().set_play, SetPlay::kNone);
+  events = match.take_events();
+  ASSERT_FALSE(events.empty());
+  EXPECT_EQ(events.back().text, "set play over");
+}
+
 TEST(Match, RobotsSeeThroughTheCameraAndTheSeedFixesTheNoise) {
   auto seen_from = [](uint64_t seed) {
     sim::WorldConfig config;

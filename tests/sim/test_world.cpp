@@ -293,6 +293,25 @@ TEST(World, RemembersWhichRobotTouchedTheBallLast) {
   EXPECT_EQ(world.last_ball_touch(), 1);
 }
 
+TEST(World, ReportsTheRobotsWhoseFeetBeganTouchingTheBallInEachStep) {
+  World world(FieldDef{}, PhysicsDef{});
+  world.add_robot(kRed1, Pose2D{-500, 0, 0});
+  world.add_robot(kBlue1, Pose2D{1500, 1000, kPi});
+  const float ball_x = world.robot(0).left_foot.x_mm + world.physics().foot_length_mm / 2 + 40;
+  world.place_ball(ball_x, world.robot(0).left_foot.y_mm);
+  TickMotion swing;
+  swing.left.dx_mm = 15;
+  std::vector<int> touches;
+  for (int t = 0; t < 6; ++t) {
+    world.step({swing, TickMotion{}});
+    touches.insert(touches.end(), world.ball_touches().begin(), world.ball_touches().end());
+  }
+  EXPECT_EQ(touches, std::vector<int>{0}); // one touch, when the contact began
+  world.step({TickMotion{}, TickMotion{}});
+  EXPECT_TRUE(world.ball_touches().empty()); // cleared by the next step
+  EXPECT_EQ(world.last_ball_touch(), 0);     // while the last toucher is remembered
+}
+
 class StandingFoot : public ::testing::TestWithParam<int> {};
 
 TEST_P(StandingFoot, YieldsOnlyForTheSubstepOfTheHitAndStaysPut) {

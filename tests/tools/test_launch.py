@@ -21,7 +21,7 @@ def test_match_is_summarised_and_every_truth_frame_is_in_the_log(tmp_path):
     assert all(r["frames_answered"] == 120 for r in summary["robots"])
     assert "team 1 #2" in result.stdout and "truth hash" in result.stdout
     assert "Goals: " in result.stdout and "Penalties: " in result.stdout
-    assert {"goals", "penalties", "falls"} <= summary.keys()
+    assert {"goals", "penalties", "falls", "set_plays"} <= summary.keys()
     assert all(r["localisation_rms_mm"] >= 0 for r in summary["robots"])
     logs = list(tmp_path.glob("*_seed1.lcmlog"))
     assert len(logs) == 1

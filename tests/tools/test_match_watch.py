@@ -26,9 +26,10 @@ def wait_until(condition, timeout=30) -> None:
         time.sleep(0.01)  # polling the watcher's state, not hiding a race
 
 
-def game(score, utime=5_000_000):
+def game(score, utime=5_000_000, state=game_state_t.PLAYING, set_play=game_state_t.SET_PLAY_NONE, set_play_team=-1):
     msg = game_state_t()
-    msg.utime, msg.state, msg.score = utime, game_state_t.PLAYING, score
+    msg.utime, msg.state, msg.score = utime, state, score
+    msg.set_play, msg.set_play_team = set_play, set_play_team
     return msg.encode()
 
 
@@ -73,12 +74,16 @@ def test_malformed_messages_are_counted_per_channel_and_skipped(watch):
     bus.publish("TL_STATUS", status(0, 1, 42))                      # no state 42
     bus.publish("TL_GAME", game([2, 1])[:-1])                       # truncated
     bus.publish("TL_GAME", game([-1, 0]))                           # a negative score
+    bus.publish("TL_GAME", game([0, 0], state=6))                   # no state 6
+    bus.publish("TL_GAME", game([0, 0], set_play=game_state_t.SET_PLAY_KICK_IN, set_play_team=2))  # no team 2
+    bus.publish("TL_GAME", game([0, 0], state=game_state_t.STANDBY))
+    bus.publish("TL_GAME", game([1, 0], set_play=game_state_t.SET_PLAY_CORNER_KICK, set_play_team=1))
     bus.publish("TL_EVENT", event(match_event_t.GOAL, team=0))
     bus.publish("TL_STATUS", status(1, 2, robot_status_t.TIMED_OUT, "no answer within 300 ms"))
     bus.publish("TL_GAME", game([2, 1]))
     wait_until(lambda: watch.score == (2, 1))
     assert watch.error is None
-    assert watch.malformed == {"TL_MATCH": 0, "TL_GAME": 2, "TL_STATUS": 2, "TL_EVENT": 2}
+    assert watch.malformed == {"TL_MATCH": 0, "TL_GAME": 4, "TL_STATUS": 2, "TL_EVENT": 2}
     assert [(e.kind, e.team) for e in watch.match_events] == [(match_event_t.GOAL, 0)]
     assert watch.timed_out(1, 2) and not watch.timed_out(0, 1)
     assert watch.events == [(2.0, "team 1 player 2 no answer within 300 ms")]

@@ -3,7 +3,7 @@
 import { drawField, drawTruth, makeView } from "./draw.js";
 
 const $ = (id) => document.getElementById(id);
-const GAME_STATES = ["INITIAL", "READY", "SET", "PLAYING", "FINISHED"];
+const GAME_STATES = ["INITIAL", "READY", "SET", "PLAYING", "FINISHED", "STANDBY"];
 const canvas = $("field");
 const ctx = canvas.getContext("2d");
 if (new URLSearchParams(location.search).has("export")) document.body.classList.add("export");

@@ -74,8 +74,9 @@ constexpr int64_t frame_start_utime(int64_t frame) {
   return first_tick_of_frame(frame) * kMotionTickUs;
 }
 
-/// Game states, as the GameController sends them.
-enum class GameState : int8_t { kInitial = 0, kReady = 1, kSet = 2, kPlaying = 3, kFinished = 4 };
+/// Game states, as the GameController sends them (STANDBY: SPL 2022 and later, between
+/// INITIAL and READY, robots standing while they wait for the referee's signal).
+enum class GameState : int8_t { kInitial = 0, kReady = 1, kSet = 2, kPlaying = 3, kFinished = 4, kStandby = 5 };
 
 /// "INITIAL", "READY", ...: the GameController's names.
 inline const char* to_string(GameState state) {
@@ -85,6 +86,32 @@ inline const char* to_string(GameState state) {
     case GameState::kSet: return "SET";
     case GameState::kPlaying: return "PLAYING";
     case GameState::kFinished: return "FINISHED";
+    case GameState::kStandby: return "STANDBY";
+  }
+  return "?";
+}
+
+/// Set plays during PLAYING (SPL 2020 and later), with the GameController's numbers: the
+/// kicking team may play the ball first; it ends when that team touches the ball or after
+/// the rules' set play time.
+enum class SetPlay : int8_t {
+  kNone = 0,
+  kGoalKick = 1,
+  kPushingFreeKick = 2,
+  kCornerKick = 3,
+  kKickIn = 4,
+  kPenaltyKick = 5,
+};
+
+/// "goal kick", "kick-in", ...
+inline const char* to_string(SetPlay set_play) {
+  switch (set_play) {
+    case SetPlay::kNone: return "none";
+    case SetPlay::kGoalKick: return "goal kick";
+    case SetPlay::kPushingFreeKick: return "pushing free kick";
+    case SetPlay::kCornerKick: return "corner kick";
+    case SetPlay::kKickIn: return "kick-in";
+    case SetPlay::kPenaltyKick: return "penalty kick";
   }
   return "?";
 }
@@ -125,6 +152,8 @@ struct GameInfo {
   bool first_half = true;
   int kickoff_team = 0;
   std::array<int, 2> score{{0, 0}};
+  SetPlay set_play = SetPlay::kNone; ///< the set play under way (PLAYING only)
+  int set_play_team = -1;            ///< the team taking it, 0 or 1; -1 with kNone
 };
 
 /// What one robot senses at the start of a frame.

@@ -156,8 +156,9 @@ TEST(GameControllerPacket, DecodesEveryField) {
   EXPECT_EQ(p.competition_type, 1);
   EXPECT_EQ(p.game_phase, 2);
   EXPECT_EQ(p.set_play, 4);
+  EXPECT_EQ(p.game.set_play, SetPlay::kKickIn);
+  EXPECT_EQ(p.game.set_play_team, 1); // the kicking team takes the set play
   EXPECT_EQ(p.raw_state, 3);
-  EXPECT_FALSE(p.standby);
   EXPECT_EQ(p.game.state, GameState::kPlaying);
   EXPECT_FALSE(p.game.first_half);
   EXPECT_EQ(p.game.secs_remaining, 437);
@@ -209,19 +210,40 @@ TEST(GameControllerPacket, MapsEveryState) {
       raw.state = s;
       const GameControllerPacket p = decode(raw);
       EXPECT_EQ(p.game.state, expected[s]) << "version " << int{version} << " state " << int{s};
-      EXPECT_FALSE(p.standby);
     }
 }
 
-TEST(GameControllerPacket, StandbyInVersion18IsInitial) {
+TEST(GameControllerPacket, StandbyInVersion18IsStandby) {
   RawPacket raw;
   raw.version = 18;
   raw.state = 5;
   const GameControllerPacket p = decode(raw);
   EXPECT_EQ(p.version, 18);
-  EXPECT_EQ(p.game.state, GameState::kInitial);
-  EXPECT_TRUE(p.standby);
+  EXPECT_EQ(p.game.state, GameState::kStandby);
   EXPECT_EQ(p.raw_state, 5);
+}
+
+TEST(GameControllerPacket, EverySetPlayIsTakenByTheKickingTeam) {
+  const SetPlay expected[] = {SetPlay::kNone, SetPlay::kGoalKick, SetPlay::kPushingFreeKick,
+                              SetPlay::kCornerKick, SetPlay::kKickIn, SetPlay::kPenaltyKick};
+  for (uint8_t set_play = 0; set_play < 6; ++set_play) {
+    RawPacket raw;
+    raw.setPlay = set_play;
+    raw.kickingTeam = raw.teams[1].teamNumber;
+    const GameControllerPacket p = decode(raw);
+    EXPECT_EQ(p.game.set_play, expected[set_play]);
+    EXPECT_EQ(p.game.set_play_team, set_play == 0 ? -1 : 1) << int{set_play};
+  }
+}
+
+TEST(GameControllerPacket, AnUnknownSetPlayOrOneWithNoKickingTeamIsAnError) {
+  RawPacket raw;
+  raw.setPlay = 6;
+  EXPECT_EQ(error_of(raw), "GameController packet: unknown setPlay 6");
+  raw.version = 18;
+  raw.setPlay = 2;
+  raw.kickingTeam = 255; // KICKING_TEAM_NONE
+  EXPECT_EQ(error_of(raw), "GameController packet: setPlay 2 with no kicking team");
 }
 
 TEST(GameControllerPacket, UnknownStatesAreErrors) {

@@ -123,6 +123,31 @@ TEST(Codec, SenseSurvivesEncodeAndDecode) {
   EXPECT_EQ(out.find({0, 2}), nullptr);
 }
 
+TEST(Codec, TheGameWithItsSetPlaySurvivesEncodeAndDecode) {
+  SenseFrame in = sample_sense();
+  in.game.state = GameState::kStandby;
+  in.game.set_play = SetPlay::kCornerKick;
+  in.game.set_play_team = 1;
+  in.game.kickoff_team = 1;
+  in.game.score = {{2, 3}};
+  const auto bytes = encode(transport::to_lcm(in));
+  sense_t msg;
+  transport::decode(bytes.data(), static_cast<int>(bytes.size()), "TL_SENSE", msg);
+  const SenseFrame out = transport::from_lcm(msg);
+  EXPECT_EQ(out.game.state, GameState::kStandby);
+  EXPECT_EQ(out.game.set_play, SetPlay::kCornerKick);
+  EXPECT_EQ(out.game.set_play_team, 1);
+  EXPECT_EQ(out.game.kickoff_team, 1);
+  EXPECT_EQ(out.game.score, (std::array<int, 2>{{2, 3}}));
+}
+
+TEST(Codec, NoSetPlayMeansNoSetPlayTeamWhateverTheWriterPutThere) {
+  sense_t msg = transport::to_lcm(sample_sense());
+  msg.set_play = 0;
+  msg.set_play_team = 0; // a writer that left the field at its default
+  EXPECT_EQ(transport::from_lcm(msg).game.set_play_team, -1);
+}
+
 TEST(Codec, WrongTypeOrTruncatedBytesAreAClearError) {
   const auto bytes = encode(transport::to_lcm(sample_act(), 0, 1));
   sense_t wrong_type;
@@ -227,6 +252,10 @@ TEST(Codec, SenseFieldsOutOfRangeAreRejected) {
   rejected("ticks that do not match the frame", [](sense_t& m) { m.motion_ticks = 3; });
   rejected("a time that does not match the frame", [](sense_t& m) { m.utime += 1; });
   rejected("a negative score", [](sense_t& m) { m.score[1] = -1; });
+  rejected("a game state past STANDBY", [](sense_t& m) { m.game_state = 6; });
+  rejected("a set play past the penalty kick", [](sense_t& m) { m.set_play = 6; });
+  rejected("a set play nobody takes", [](sense_t& m) { m.set_play = 4; m.set_play_team = -1; });
+  rejected("a set play for a third team", [](sense_t& m) { m.set_play = 1; m.set_play_team = 2; });
   rejected("the same robot twice", [](sense_t& m) { m.robots.push_back(m.robots[0]); m.num_robots = 2; });
   rejected("a sonar reading beyond its range", [](sense_t& m) { m.robots[0].sonar_left = 1.5f; });
   rejected("a goal post that does not exist", [](sense_t& m) { m.robots[0].seen[0].id = 4; });

@@ -104,7 +104,7 @@ TEST(Snapshot, FieldsOutOfRangeAreMalformed) {
   rejected("negative frame", [](blackboard_snapshot_t& m) { m.frame = -1; });
   rejected("unknown action type", [](blackboard_snapshot_t& m) { m.request_body.action_type = 8; });
   rejected("a third foot", [](blackboard_snapshot_t& m) { m.active.foot = 2; });
-  rejected("unknown game state", [](blackboard_snapshot_t& m) { m.game_state = 5; });
+  rejected("unknown game state", [](blackboard_snapshot_t& m) { m.game_state = 6; });
   rejected("player number 0", [](blackboard_snapshot_t& m) { m.player_number = 0; });
   rejected("kick phase 4", [](blackboard_snapshot_t& m) { m.kick_phase = 4; });
   rejected("NaN odometry", [](blackboard_snapshot_t& m) { m.odometry.x_mm = std::nanf(""); });

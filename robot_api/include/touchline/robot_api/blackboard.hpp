@@ -38,7 +38,18 @@ struct VisionBlackboard {
   int64_t frame = 0;        ///< camera frame index
 };
 
-enum class GameState : int8_t { INITIAL = 0, READY = 1, SET = 2, PLAYING = 3, FINISHED = 4 };
+/// The GameController's states (STANDBY: SPL 2023 on, between INITIAL and READY; robots stand).
+enum class GameState : int8_t { INITIAL = 0, READY = 1, SET = 2, PLAYING = 3, FINISHED = 4, STANDBY = 5 };
+
+/// The GameController's set plays (SPL 2020 on), during PLAYING.
+enum class SetPlay : int8_t {
+  NONE = 0,
+  GOAL_KICK = 1,
+  PUSHING_FREE_KICK = 2,
+  CORNER_KICK = 3,
+  KICK_IN = 4,
+  PENALTY_KICK = 5,
+};
 
 /// Written by the game-controller adapter.
 struct GameControllerBlackboard {
@@ -48,6 +59,8 @@ struct GameControllerBlackboard {
   bool penalised = false;
   std::array<int, 2> score{{0, 0}};
   int secsRemaining = 0;
+  SetPlay setPlay = SetPlay::NONE; ///< the set play under way
+  int setPlayTeam = -1;            ///< the team index taking it (0 or 1; ours is `team`), -1: none
 };
 
 /// A teammate's last message, written by the receiver adapter.

@@ -42,6 +42,9 @@ class Field {
   /// True inside the goal box (goal_box_length x goal_box_width, from the goal line into
   /// the field) of the team defending at -x (team 0) or +x (team 1). Edges count as inside.
   bool in_goal_box(int defending_team, float x_mm, float y_mm) const;
+  /// True inside the penalty area (penalty_area_length x penalty_area_width, as the goal
+  /// box); a field without one (2011: 0) has the goal box serve as it, as that rule book did.
+  bool in_penalty_area(int defending_team, float x_mm, float y_mm) const;
   /// True inside the goal itself: strictly behind the goal line, at most goal_depth_mm
   /// behind it, and between the side nets (|y| <= goal_width/2). For a point; a goal is
   /// scored when the ball's centre is in by more than its radius.

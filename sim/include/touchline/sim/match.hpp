@@ -7,6 +7,7 @@
 // concerns (touchline/random.hpp), so a seed fixes the match whatever order the robots'
 // answers arrive in.
 #include <cstdint>
+#include <array>
 #include <deque>
 #include <map>
 #include <optional>
@@ -142,6 +143,7 @@ class Match {
   std::set<RobotId> external_penalised_;
   std::vector<MatchEvent> events_;
   std::map<RobotId, OnField> on_field_;
+  std::array<bool, 2> touched_by_team_{{false, false}}; ///< feet of the team began touching the ball this frame
   int64_t frame_ = 0;
   bool started_ = false;
 };

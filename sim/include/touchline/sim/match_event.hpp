@@ -16,6 +16,7 @@ struct MatchEvent {
     kReleased = 3,    ///< `robot` back on the field after its penalty
     kFall = 4,        ///< `robot` fell (pushed)
     kBallOut = 5,     ///< the ball left the field and was put back
+    kSetPlay = 6,     ///< a set play began (`team` takes it, `text` names it) or ended (team -1)
   };
   int64_t utime = 0;
   Kind kind = Kind::kStateChange;

@@ -5,7 +5,8 @@
 // and the ball go, whose motions to ignore); it sends nothing and reads no clock but the
 // input's utime, so the same inputs give the same decisions, bit for bit.
 //
-// States: INITIAL (initial_s) -> READY (ready_s) -> SET (set_s) -> PLAYING, timed exactly
+// States: INITIAL (initial_s) -> [STANDBY (standby_s)] -> READY (ready_s) -> SET (set_s) ->
+// PLAYING, timed exactly
 // from the utime each state began, whatever the update rate. A goal gives READY again,
 // kick-off to the conceding team. The clock (secs_remaining) runs only in PLAYING; after
 // half_s of it the half ends: INITIAL of the second half, kick-off to the team that did
@@ -23,6 +24,17 @@
 //   of the team that touched it last (the match says which), or where it crossed if
 //   nobody knows; no throw-in or goal-kick spots.
 // - No kick-off restrictions in PLAYING (the defenders may enter the circle at once).
+//
+// Set plays (rules.set_plays, SPL 2020-2022): in PLAYING, a ball out over a touchline is a
+// kick-in for the opponents of the team that touched it last, placed where it crossed the
+// line; over a goal line it is a goal kick for the defenders (ball on the goal box's front
+// corner on the side it left) or, when a defender touched it last, a corner kick for the
+// attackers (ball on the field's corner on that side). A pushing foul is a pushing free kick
+// for the fouled team (the ball stays where it is), or a penalty kick (ball on the penalty
+// mark) when the pusher stood in its own penalty area. A set play ends when a robot of its
+// team begins touching the ball, at the first update after set_play_s, or when PLAYING ends.
+// Simplified: opponents are not kept 750 mm from the ball, a penalty kick moves no robot,
+// and the set play's time is checked once per update (a frame), not timed to the microsecond.
 #include <array>
 #include <cstdint>
 #include <map>
@@ -50,6 +62,8 @@ struct RefereeInput {
   BallTruth ball;
   std::vector<RobotOnField> robots; ///< every robot the match has placed, penalised ones included
   int last_touch_team = -1;         ///< team whose robot touched the ball last, -1: unknown
+  /// Teams whose robots began touching the ball since the last update (ends a set play).
+  std::array<bool, 2> touched_by_team{{false, false}};
 };
 
 enum class PenaltyKind : int8_t {
@@ -86,10 +100,18 @@ struct RobotPlacement {
 /// Put the ball here at rest. kKickOff: on the centre spot after a goal, at half time, and
 /// at SET if the robots moved it in READY (never for the first kick-off: the match puts
 /// that ball where its config says). kBallOut: it left the field (see the notes above).
+/// kSetPlay: where a set play is taken from (a ball out with set plays, a penalty kick).
 struct BallPlacement {
-  enum class Why : int8_t { kKickOff, kBallOut };
+  enum class Why : int8_t { kKickOff, kBallOut, kSetPlay };
   Why why = Why::kKickOff;
   float x_mm = 0, y_mm = 0;
+};
+
+/// A set play began (`set_play` and its `team`) or ended (kNone, team -1).
+struct SetPlayChange {
+  SetPlay set_play = SetPlay::kNone;
+  int team = -1;
+  int64_t utime = 0;
 };
 
 /// What one update decided, in the order it happened. Placements are in the order to
@@ -101,6 +123,7 @@ struct RefereeDecision {
   std::vector<RobotId> released;           ///< served their time; each one's re-entry is in placements
   std::vector<RobotPlacement> placements;  ///< removals, re-entries, SET's manual placements
   std::optional<BallPlacement> ball;
+  std::vector<SetPlayChange> set_plays;    ///< set plays begun and ended, in order
   /// Contesting the ball, in contact with an opponent nearer it: the thesis' heuristic
   /// stops this robot's feet (2.2.4); the match may hold its motions for the frame.
   std::vector<RobotId> stopped;
@@ -123,7 +146,7 @@ class Referee {
   bool penalised(RobotId id) const { return penalties_.count(id) != 0; }
   std::optional<Penalty> penalty(RobotId id) const;
   /// Whether the match should apply the robot's foot motions: READY or PLAYING and not
-  /// penalised. (SPL robots stand still in INITIAL, SET and FINISHED.)
+  /// penalised. (SPL robots stand still in INITIAL, STANDBY, SET and FINISHED.)
   bool may_move(RobotId id) const;
 
   /// The canonical kick-off position (READY's target; where manual placement puts a
@@ -155,9 +178,23 @@ class Referee {
   int64_t half_us() const;
 
   // Ball (referee_ball.cpp).
+  /// Where a ball that is wholly out crossed the line: which line, and the crossing point
+  /// traced back along its velocity (the referee sees the ball once per frame).
+  struct BallCrossing {
+    bool over_touchline = false;
+    float x_mm = 0, y_mm = 0; ///< on the line it crossed (clamped to the field)
+  };
+  std::optional<BallCrossing> ball_crossing(const BallTruth& ball) const;
   bool check_goal(const RefereeInput& in, RefereeDecision& d);
   void check_ball_out(const RefereeInput& in, RefereeDecision& d) const;
   void replace_ball_for_kickoff(const BallTruth& ball, RefereeDecision& d) const;
+
+  // Set plays (referee_set_plays.cpp).
+  void check_set_play_over(const RefereeInput& in, RefereeDecision& d);
+  void award_ball_out(const RefereeInput& in, RefereeDecision& d);
+  void award_foul(const RobotOnField& pusher, int64_t now, RefereeDecision& d);
+  void start_set_play(SetPlay set_play, int team, int64_t at, RefereeDecision& d);
+  void end_set_play(int64_t at, RefereeDecision& d);
 
   // Penalties and placements (referee_penalties.cpp, referee_positions.cpp).
   void release_served(int64_t now, const BallTruth& ball, Robots& robots, RefereeDecision& d);
@@ -184,6 +221,9 @@ class Referee {
   int64_t clock_utime_ = 0;          ///< the last update's utime
   int64_t state_since_utime_ = 0;
   int64_t played_us_ = 0;            ///< PLAYING time in this half
+  SetPlay set_play_ = SetPlay::kNone;
+  int set_play_team_ = -1;
+  int64_t set_play_until_utime_ = 0;
 
   std::map<RobotId, Penalty> penalties_;
   /// Last pushing penalty of each pair of opponents, (lower id, higher id): the cooldown.

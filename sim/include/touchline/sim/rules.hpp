@@ -1,6 +1,6 @@
 #pragma once
-// The rules the referee plays by (SPL 2011, simplified), read from the [rules] section of
-// a world config. Every duration is simulated time; every switch turns one rule off
+// The rules the referee plays by (SPL 2011, simplified; with set_plays and standby_s the
+// later rule books' set plays and STANDBY), read from the [rules] section of a world config. Every duration is simulated time; every switch turns one rule off
 // without touching the others (experiments that want, say, no pushing penalties).
 #include "touchline/ini.hpp"
 #include "touchline/sim/collision.hpp"
@@ -12,6 +12,7 @@ struct RulesDef {
 
   // --- game states and the clock ---
   float initial_s = 1.f;   ///< INITIAL at the start of each half before READY, s (0: READY at once)
+  float standby_s = 0.f;   ///< STANDBY between INITIAL and READY (SPL 2023 on: robots wait for the referee's signal), s (0: none)
   float ready_s = 45.f;    ///< READY: robots walk to their kick-off positions, s (SPL: 45)
   float set_s = 5.f;       ///< SET: robots stand still until the kick-off whistle, s
   float half_s = 600.f;    ///< playing time of one half, s; the clock runs only in PLAYING
@@ -32,6 +33,14 @@ struct RulesDef {
   bool ball_out = true;         ///< put back a ball that left the field (else it stays where it is)
   float ball_out_setback_mm = 1000.f; ///< ball put back this far towards the last toucher's own goal, mm
   float ball_out_inset_mm = 0.f;      ///< ball put back this far inside the line it crossed, mm (0: on it)
+
+  // --- set plays (SPL 2020 on; off: the 2011 ball-out rule above) ---
+  /// A ball out gives the opponents of its last toucher a kick-in (over a touchline), the
+  /// defenders a goal kick or the attackers a corner kick (over a goal line); a pushing foul
+  /// gives the fouled team a pushing free kick, or a penalty kick when the pusher was in its
+  /// own penalty area.
+  bool set_plays = false;
+  float set_play_s = 30.f; ///< a set play ends when its team touches the ball, or after this long, s
 
   // --- falls (beyond the thesis) ---
   float fall_probability = 0.3f; ///< chance that the robot pushed in a pushing foul falls, [0, 1]

@@ -76,6 +76,9 @@ class World {
   int robot_count() const;
   /// Index of the robot whose foot touched the ball last, -1 if none has.
   int last_ball_touch() const;
+  /// Indices of the robots whose feet began touching the ball during the last step(), in
+  /// the order the contacts began (cleared when the next step() starts).
+  const std::vector<int>& ball_touches() const;
   RobotTruth robot(int index) const; ///< std::out_of_range for a bad index
   BallTruth ball() const;
   const Field& field() const;

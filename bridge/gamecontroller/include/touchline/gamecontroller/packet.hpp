@@ -89,13 +89,11 @@ struct GameControllerPacket {
   int competition_phase = 0;
   int competition_type = 0;
   int game_phase = 0; ///< GAME_PHASE_*: 0 normal, 1 penalty shoot-out, 2 overtime, 3 timeout
-  int set_play = 0;   ///< SET_PLAY_*
+  int set_play = 0;   ///< SET_PLAY_*, 0..5 (game.set_play says the same)
   int raw_state = 0;  ///< the packet's state number
-  /// STATE_STANDBY (version 18): game.state says kInitial, which our GameState has in its
-  /// place (robots stand still in both).
-  bool standby = false;
-  /// game.state, secs_remaining (the packet's, may be negative), first_half, score, and
-  /// kickoff_team = *kicking_team (0 when there is none: see kicking_team).
+  /// game.state (STATE_STANDBY of version 18 as kStandby), secs_remaining (the packet's, may
+  /// be negative), first_half, score, kickoff_team = *kicking_team (0 when there is none:
+  /// see kicking_team), and set_play with set_play_team = *kicking_team while one is on.
   GameInfo game;
   /// Our index of the team to kick off / take the set play; nullopt for KICKING_TEAM_NONE
   /// (version 18), where game.kickoff_team is 0 and callers should keep what they had.

@@ -1,0 +1,66 @@
+// The adapters that write the Blackboard from a sensed frame: here the game controller's
+// (every state and set play mapped by name, not by number).
+#include "touchline/robot/adapters.hpp"
+
+#include <gtest/gtest.h>
+
+namespace touchline::robot {
+namespace {
+
+api::GameControllerBlackboard written(const GameInfo& game, RobotId id = {1, 3}, bool penalised = false) {
+  SenseFrame frame;
+  frame.utime = 123456;
+  frame.game = game;
+  RobotSense sense;
+  sense.id = id;
+  sense.penalised = penalised;
+  api::Blackboard blackboard;
+  write_game_controller(frame, sense, blackboard);
+  EXPECT_EQ(blackboard.utime, 123456);
+  return blackboard.gameController;
+}
+
+TEST(GameControllerAdapter, EveryStateReachesTheBlackboard) {
+  const std::pair<GameState, api::GameState> states[] = {
+      {GameState::kInitial, api::GameState::INITIAL}, {GameState::kReady, api::GameState::READY},
+      {GameState::kSet, api::GameState::SET},         {GameState::kPlaying, api::GameState::PLAYING},
+      {GameState::kFinished, api::GameState::FINISHED}, {GameState::kStandby, api::GameState::STANDBY}};
+  for (const auto& [sensed, expected] : states) {
+    GameInfo game;
+    game.state = sensed;
+    EXPECT_EQ(written(game).state, expected) << to_string(sensed);
+  }
+}
+
+TEST(GameControllerAdapter, EverySetPlayAndItsTeamReachTheBlackboard) {
+  const std::pair<SetPlay, api::SetPlay> set_plays[] = {
+      {SetPlay::kGoalKick, api::SetPlay::GOAL_KICK},       {SetPlay::kPushingFreeKick, api::SetPlay::PUSHING_FREE_KICK},
+      {SetPlay::kCornerKick, api::SetPlay::CORNER_KICK},   {SetPlay::kKickIn, api::SetPlay::KICK_IN},
+      {SetPlay::kPenaltyKick, api::SetPlay::PENALTY_KICK}};
+  for (const auto& [sensed, expected] : set_plays) {
+    GameInfo game;
+    game.set_play = sensed;
+    game.set_play_team = 0;
+    const api::GameControllerBlackboard gc = written(game);
+    EXPECT_EQ(gc.setPlay, expected) << to_string(sensed);
+    EXPECT_EQ(gc.setPlayTeam, 0);
+  }
+  const api::GameControllerBlackboard none = written(GameInfo{});
+  EXPECT_EQ(none.setPlay, api::SetPlay::NONE);
+  EXPECT_EQ(none.setPlayTeam, -1);
+}
+
+TEST(GameControllerAdapter, WhoTheRobotIsAndTheScoreReachTheBlackboard) {
+  GameInfo game;
+  game.score = {{4, 1}};
+  game.secs_remaining = 321;
+  const api::GameControllerBlackboard gc = written(game, {1, 3}, true);
+  EXPECT_EQ(gc.team, 1);
+  EXPECT_EQ(gc.playerNumber, 3);
+  EXPECT_TRUE(gc.penalised);
+  EXPECT_EQ(gc.score, (std::array<int, 2>{{4, 1}}));
+  EXPECT_EQ(gc.secsRemaining, 321);
+}
+
+} // namespace
+} // namespace touchline::robot
