@@ -191,6 +191,13 @@ nao::NaoJointFrame RunswiftWalk::step(const nao::WalkCommand& command, const nao
     fault = "threw a non-standard exception";
   }
   if (fault.empty()) {
+    if (def_.limit_joint_speed && have_last_good_) {
+      constexpr float kDt_s = static_cast<float>(kControlPeriodUs) * 1e-6f;
+      for (std::size_t i = 0; i < nao::kJointCount; ++i) {
+        const float most = nao::kJointMaxSpeed_rad_s[i] * kDt_s;
+        out.joint_angles_rad[i] = std::fmax(last_good_[i] - most, std::fmin(last_good_[i] + most, out.joint_angles_rad[i]));
+      }
+    }
     last_good_ = out.joint_angles_rad;
     have_last_good_ = true;
     return out;

@@ -146,6 +146,35 @@ TEST(RunswiftWalk, KickSwingsTheKickingFootForward) {
   EXPECT_EQ(rig.faults, 0);
 }
 
+/// The fastest any joint target moved in a tick during a right kick, as a multiple of what
+/// that joint can do.
+double fastest_kick_joint(bool limit_joint_speed) {
+  RunswiftWalkDef def;
+  def.limit_joint_speed = limit_joint_speed;
+  RunswiftWalk engine(def);
+  OpenLoopRig rig(engine);
+  run(rig, crouch(), 1.0);
+  WalkCommand kick;
+  kick.kind = WalkCommand::Kind::kick;
+  kick.kick_foot = WalkCommand::Foot::right;
+  kick.ball_x_mm = 230;
+  kick.ball_y_mm = -60;
+  double worst = 0;
+  nao::JointArray before = rig.sensors().joint_angles_rad;
+  for (int i = 0; i < ticks_for(4.0); ++i) {
+    const nao::JointArray now = rig.tick(kick).joint_angles_rad;
+    for (std::size_t j = 0; j < nao::kJointCount; ++j)
+      worst = std::fmax(worst, std::fabs(now[j] - before[j]) / testing::kDtS / nao::kJointMaxSpeed_rad_s[j]);
+    before = now;
+  }
+  return worst;
+}
+
+TEST(RunswiftWalk, NoJointTargetMovesFasterThanTheJointCan) {
+  EXPECT_GT(fastest_kick_joint(false), 3.0); // their kick, unclipped
+  EXPECT_LE(fastest_kick_joint(true), 1.0 + 1e-4);
+}
+
 TEST(RunswiftWalk, ANaNJointHoldsTheLastGoodFrameAndNamesTheJoint) {
   RunswiftWalk engine;
   OpenLoopRig rig(engine);

@@ -94,4 +94,41 @@ constexpr std::array<JointLimits, kJointCount> kJointLimits = {{
     {0.f, 1.f},                                   // RHand
 }};
 
+namespace detail {
+/// A joint's top speed: its motor's no-load speed through its gear reduction.
+constexpr float motor_rad_s(float no_load_rpm, float reduction) { return no_load_rpm * 2 * 3.14159265358979f / 60 / reduction; }
+} // namespace detail
+
+/// Top speed of each joint of the Nao V6, rad/s (hands: fraction per second), from the
+/// published motor specification (motor type, no-load speed, reduction ratio). A joint
+/// cannot follow a target that moves faster; legs: 4.5 rad/s (yaw-pitch, rolls), 7.0 rad/s
+/// (pitches).
+constexpr std::array<float, kJointCount> kJointMaxSpeed_rad_s = {{
+    detail::motor_rad_s(10700.f, 150.27f), // HeadYaw: motor type 3, reduction A
+    detail::motor_rad_s(10700.f, 173.22f), // HeadPitch: motor type 3, reduction B
+    detail::motor_rad_s(11400.f, 150.27f), // LShoulderPitch: motor type 4
+    detail::motor_rad_s(10700.f, 173.22f), // LShoulderRoll: motor type 3, reduction B
+    detail::motor_rad_s(10700.f, 150.27f), // LElbowYaw: motor type 3, reduction A
+    detail::motor_rad_s(10700.f, 173.22f), // LElbowRoll: motor type 3, reduction B
+    detail::motor_rad_s(8400.f, 50.61f), // LWristYaw: motor type 2, reduction A
+    detail::motor_rad_s(8700.f, 201.3f), // LHipYawPitch: motor type 1
+    detail::motor_rad_s(8700.f, 201.3f), // LHipRoll: motor type 1
+    detail::motor_rad_s(8700.f, 130.85f), // LHipPitch: motor type 5
+    detail::motor_rad_s(8700.f, 130.85f), // LKneePitch: motor type 5
+    detail::motor_rad_s(8700.f, 130.85f), // LAnklePitch: motor type 5
+    detail::motor_rad_s(8700.f, 201.3f), // LAnkleRoll: motor type 1
+    detail::motor_rad_s(8700.f, 201.3f), // RHipRoll: motor type 1
+    detail::motor_rad_s(8700.f, 130.85f), // RHipPitch: motor type 5
+    detail::motor_rad_s(8700.f, 130.85f), // RKneePitch: motor type 5
+    detail::motor_rad_s(8700.f, 130.85f), // RAnklePitch: motor type 5
+    detail::motor_rad_s(8700.f, 201.3f), // RAnkleRoll: motor type 1
+    detail::motor_rad_s(11400.f, 150.27f), // RShoulderPitch: motor type 4
+    detail::motor_rad_s(10700.f, 173.22f), // RShoulderRoll: motor type 3, reduction B
+    detail::motor_rad_s(10700.f, 150.27f), // RElbowYaw: motor type 3, reduction A
+    detail::motor_rad_s(10700.f, 173.22f), // RElbowRoll: motor type 3, reduction B
+    detail::motor_rad_s(8400.f, 50.61f), // RWristYaw: motor type 2, reduction A
+    detail::motor_rad_s(8400.f, 36.24f), // LHand: motor type 2, reduction B
+    detail::motor_rad_s(8400.f, 36.24f), // RHand: motor type 2, reduction B
+}};
+
 } // namespace touchline::robot::nao

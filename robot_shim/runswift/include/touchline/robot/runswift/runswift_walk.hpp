@@ -13,7 +13,8 @@
 // next tick's joint positions, what the joints reached.
 //
 // Reads: the walk command and the sensor frame. Writes: 25 joint targets and their walk's
-// odometry increment. Never throws from step(): a NaN or a leg joint beyond its limits (or an
+// odometry increment, the joints clipped to their V6 ranges and speeds as their motion
+// pipeline clips them. Never throws from step(): a NaN or a leg joint beyond its limits (or an
 // exception of theirs) returns the last good joints with engine_fault set, and
 // fault_message() names the joint.
 #include <cstdint>
@@ -39,6 +40,10 @@ struct RunswiftWalkDef {
   /// foot and are only clipped (their kick swings a shoulder up to 0.72 rad past its range,
   /// and their walk holds the elbows at 0, 2 degrees outside theirs). NaN is always a fault.
   float leg_limit_tolerance_rad = 0.1745f;
+  /// As their ClippedGenerator: no joint target moves further in a tick than the joint can
+  /// (nao::kJointMaxSpeed_rad_s); their kick asks the kicking ankle for 49 rad/s, 7 times
+  /// what it can do.
+  bool limit_joint_speed = true;
 };
 
 class RunswiftWalk {
