@@ -208,6 +208,21 @@ TEST(RunswiftWalk, AJointFarBeyondItsLimitIsAFaultNamingIt) {
   EXPECT_NE(engine.fault_message().find("(limits "), std::string::npos) << engine.fault_message();
 }
 
+TEST(RunswiftWalk, EnginesInOneProcessAreIndependentAndRepeatBitForBit) {
+  // Several robots' walks in one process (the in-process match): one engine's ticks between
+  // another's change nothing of the other's joints.
+  RunswiftWalk alone_engine, twin_engine, other_engine;
+  OpenLoopRig alone(alone_engine), twin(twin_engine), other(other_engine);
+  for (int i = 0; i < ticks_for(4.0); ++i) {
+    const WalkCommand c = i < 80 ? crouch() : walk(250, 0, 0);
+    const nao::NaoJointFrame a = alone.tick(c);
+    other.tick(i < 40 ? crouch() : walk(-100, 80, 0.5f));
+    const nao::NaoJointFrame b = twin.tick(c);
+    ASSERT_EQ(a.joint_angles_rad, b.joint_angles_rad) << "tick " << i;
+    ASSERT_EQ(a.odometry_forward_mm, b.odometry_forward_mm) << "tick " << i;
+  }
+}
+
 TEST(RunswiftWalk, ElbowsHeldAtZeroAreClippedIntoTheV6Range) {
   // Their walk holds the elbow rolls at 0, just outside the V6's range; like their own
   // motion pipeline, the adapter clips that rather than calling it a fault.

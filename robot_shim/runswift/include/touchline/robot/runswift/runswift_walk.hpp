@@ -37,7 +37,7 @@ struct RunswiftWalkDef {
   /// A leg joint up to this far beyond its V6 limit is clipped to it, as their motion
   /// pipeline (ClippedGenerator) and the joint itself do (their kick straightens a knee 0.09
   /// rad past its range); further is an engine fault, rad. Head, arm and hand joints move no
-  /// foot and are only clipped (their kick swings a shoulder up to 0.72 rad past its range,
+  /// foot and are only clipped (their kick swings a shoulder 0.63 rad past its range,
   /// and their walk holds the elbows at 0, 2 degrees outside theirs). NaN is always a fault.
   float leg_limit_tolerance_rad = 0.1745f;
   /// As their ClippedGenerator: no joint target moves further in a tick than the joint can
