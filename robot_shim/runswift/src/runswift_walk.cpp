@@ -163,7 +163,8 @@ RunswiftWalk::~RunswiftWalk() = default;
 
 nao::NaoJointFrame RunswiftWalk::step(const nao::WalkCommand& command, const nao::NaoSensorFrame& sensors) noexcept {
   nao::NaoJointFrame out;
-  std::string fault;
+  std::string fault; // why the tick is faulty, when it can be said (a message needs memory)
+  bool faulty = false;
   try {
     Engine& e = *engine_;
     const SensorValues s = to_sensor_values(sensors, def_.negate_gyro_z);
@@ -185,12 +186,21 @@ nao::NaoJointFrame RunswiftWalk::step(const nao::WalkCommand& command, const nao
     fault = check_and_clip(out.joint_angles_rad, def_.leg_limit_tolerance_rad, beyond_limit_rad_);
     if (fault.empty() && !(std::isfinite(odometry.forward) && std::isfinite(odometry.left) && std::isfinite(odometry.turn)))
       fault = "odometry is not finite";
+    faulty = !fault.empty();
   } catch (const std::exception& ex) {
-    fault = std::string("threw: ") + ex.what();
+    faulty = true;
+    try {
+      fault = std::string("threw: ") + ex.what();
+    } catch (...) {
+    }
   } catch (...) {
-    fault = "threw a non-standard exception";
+    faulty = true;
+    try {
+      fault = "threw a non-standard exception";
+    } catch (...) {
+    }
   }
-  if (fault.empty()) {
+  if (!faulty) {
     if (def_.limit_joint_speed && have_last_good_) {
       constexpr float kDt_s = static_cast<float>(kControlPeriodUs) * 1e-6f;
       for (std::size_t i = 0; i < nao::kJointCount; ++i) {
