@@ -21,6 +21,7 @@
 #include "touchline/lcm/robot_node.hpp"
 #include "touchline/python/python_behaviour.hpp"
 #include "touchline/python/tick_guard.hpp"
+#include "touchline/robot/walk_engines.hpp"
 #include "touchline/robot_api/data.hpp"
 
 namespace po = boost::program_options;
@@ -136,6 +137,9 @@ int main(int argc, char** argv) {
      "charge the behaviour's CPU time to simulated time: a tick using more than one frame "
      "(33.3 ms) of CPU makes the robot miss frames as on the robot (the last request stays in force)")
     ("walk-config", po::value(&files.walk), "walk parameters file ([walk] section); default: the built-in walk")
+    ("walk-engine", po::value(&def.engine.name)->default_value(def.engine.name),
+     "the walk engine: walkcycle (our WalkCycle, feet planned directly, 10 ms) or nao-joints (the same plan "
+     "as a Nao V6's joint angles through our inverse kinematics, back to feet by forward kinematics)")
     ("kick-config", po::value(&files.kick), "kick and dribble parameters file ([kick], [dribble]); default: the built-in kick")
     ("field-config", po::value(&files.field), "the world config whose [field] the robot knows (landmarks for localisation); default: SPL 2011")
     ("perfect-localisation", po::bool_switch(&def.localisation.perfect), "the robot's pose from the truth instead of the filter (the ball still from the camera)")
@@ -172,6 +176,11 @@ int main(int argc, char** argv) {
       throw po::error(std::string("--behaviour ") + e.what());
     }
     def = robot::load_robot_def(files, std::move(def));
+    try {
+      robot::make_walk_engine(def.engine, def.walk, def.kick); // an unknown name: a usage error, now
+    } catch (const ConfigError& e) {
+      throw po::error(std::string("--walk-engine: ") + e.what());
+    }
     if (!std::filesystem::is_directory(data_dir)) throw po::error("--data-dir " + data_dir + " is not a directory");
     // Before the interpreter: the check redirects stderr for a moment, so no other thread may run.
     if (const auto problem = transport::lcm_url_problem(node.lcm_url))
