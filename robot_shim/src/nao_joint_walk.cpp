@@ -37,9 +37,26 @@ Eigen::Isometry3d sole_pose(const Pose2D& foot, const Pose2D& torso, double sole
 NaoJointWalk::NaoJointWalk(const NaoJointWalkDef& def, const WalkDef& walk, const KickDef& kick)
     : def_(def), gait_(walk, kick) {}
 
+namespace {
+/// Whether the kick's swing is what moves the feet now (its prepare still walks to a stop).
+bool kick_swinging(const KickGenerator& kick) { return kick.running() && kick.last_phase() == KickPhase::kSwing; }
+} // namespace
+
+bool NaoJointWalk::left_lifted() const {
+  const KickGenerator& kick = gait_.kick();
+  if (kick_swinging(kick)) return kick.request().foot == api::ActionCommand::Foot::LEFT;
+  return gait_.walk().left_swinging();
+}
+
 float NaoJointWalk::swing_lift_mm() const {
+  const KickGenerator& kick = gait_.kick();
+  if (kick_swinging(kick)) {
+    const float s = static_cast<float>(kick.ticks_in_phase()) / static_cast<float>(kick.plan().total_ticks());
+    // Up within the first ticks (the wind-up starts slowly), down as the foot comes back.
+    return def_.kick_lift_mm * std::min(1.f, 4 * std::sin(kPi * std::clamp(s, 0.f, 1.f)));
+  }
   const WalkCycle& walk = gait_.walk();
-  if (walk.standing() || gait_.kick().running()) return 0.f;
+  if (walk.standing()) return 0.f;
   // Where the swing is within the step's single support, as WalkCycle moves the foot.
   const WalkDef& w = walk.def();
   const float step_s = 0.5f * w.period_s;
@@ -54,10 +71,10 @@ void NaoJointWalk::joints_for_plan(nao::JointAngles& joints) const {
   const Pose2D torso{0.5f * (feet.left.x_mm + feet.right.x_mm), 0.5f * (feet.left.y_mm + feet.right.y_mm),
                      mean_heading(feet.left.theta_rad, feet.right.theta_rad)};
   const float lift = swing_lift_mm();
-  const bool left_lifted = lift > 0 && gait_.walk().left_swinging();
+  const bool left_up = lift > 0 && left_lifted();
   const double ground_z = -static_cast<double>(def_.sole_below_torso_mm);
-  const Eigen::Isometry3d left = sole_pose(feet.left, torso, ground_z + (left_lifted ? lift : 0.f));
-  const Eigen::Isometry3d right = sole_pose(feet.right, torso, ground_z + (left_lifted || lift <= 0 ? 0.f : lift));
+  const Eigen::Isometry3d left = sole_pose(feet.left, torso, ground_z + (left_up ? lift : 0.f));
+  const Eigen::Isometry3d right = sole_pose(feet.right, torso, ground_z + (left_up || lift <= 0 ? 0.f : lift));
   // One HipYawPitch for both legs: the feet's yaws about the torso are mirror images, so
   // each leg alone would need nearly the same one.
   const double hyp = 0.5 * (nao::hip_yaw_pitch_for(Side::kLeft, left, def_.legs) +

@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <sstream>
 
 #include "touchline/angles.hpp"
@@ -112,4 +114,39 @@ TEST(NaoJointWalk, TheSwingFootLiftsToItsSwingHeightMidStep) {
   }
   EXPECT_NEAR(highest, 25.f, 0.5f);
   EXPECT_EQ(walk.name(), "nao-joints");
+}
+
+TEST(NaoJointWalk, ItKicksAsTheWalkCycleDoesWhicheverFootBoreTheWeight) {
+  // Walk, then kick with either foot: the feet the world gets through the joints match the
+  // walkcycle engine's (same plan): the kicking foot swings, the support foot stays.
+  for (auto foot : {api::ActionCommand::Foot::LEFT, api::ActionCommand::Foot::RIGHT}) {
+    WalkEngineDef joints_def;
+    joints_def.name = "nao-joints";
+    std::ostringstream warnings;
+    MotionDef def;
+    def.warnings = &warnings;
+    MotionAdapter joints(make_walk_engine(joints_def, WalkDef{}, KickDef{}), def);
+    MotionAdapter feet(WalkDef{});
+    api::Blackboard a, b;
+    a.behaviour.request.body = b.behaviour.request.body = api::ActionCommand::walk(150, 0, 0);
+    float worst_mm = 0, kick_travel_mm = 0;
+    for (int i = 0; i < 400; ++i) {
+      if (i == 130) {
+        api::ActionCommand::Body kick;
+        kick.actionType = api::ActionCommand::ActionType::KICK;
+        kick.power = 1;
+        kick.foot = foot;
+        a.behaviour.request.body = b.behaviour.request.body = kick;
+      }
+      joints.tick(a);
+      const TickMotion tb = feet.tick(b);
+      if (a.motion.kickPhase == 2) kick_travel_mm += std::abs(foot == api::ActionCommand::Foot::LEFT ? tb.left.dx_mm : tb.right.dx_mm);
+      for (auto [p, q] : {std::pair{joints.feet().left, feet.feet().left}, std::pair{joints.feet().right, feet.feet().right}})
+        worst_mm = std::max(worst_mm, std::hypot(p.x_mm - q.x_mm, p.y_mm - q.y_mm));
+      EXPECT_EQ(a.motion.kickPhase, b.motion.kickPhase);
+    }
+    EXPECT_GT(kick_travel_mm, 200.f); // the swing did happen: back, through, back again
+    EXPECT_LT(worst_mm, 1.f);
+    EXPECT_EQ(warnings.str(), "");
+  }
 }
