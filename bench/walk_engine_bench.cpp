@@ -84,9 +84,12 @@ std::vector<double> velocity(const EngineCase& c, const api::ActionCommand::Body
 int main(int argc, char** argv) {
   int ticks = 20000;
   if (argc == 3 && std::strcmp(argv[1], "--ticks") == 0) ticks = std::max(100, std::atoi(argv[2]));
-  const EngineCase engines[] = {{"walkcycle (10 ms)", "walkcycle", 10000},
-                                {"nao-joints (10 ms)", "nao-joints", 10000},
-                                {"nao-joints (12 ms)", "nao-joints", 12000}};
+  std::vector<EngineCase> engines = {{"walkcycle (10 ms)", "walkcycle", 10000},
+                                     {"nao-joints (10 ms)", "nao-joints", 10000},
+                                     {"nao-joints (12 ms)", "nao-joints", 12000}};
+  const auto names = walk_engine_names();
+  if (std::find(names.begin(), names.end(), "runswift") != names.end())
+    engines.push_back({"runswift (12.2 ms)", "runswift", 12200}); // a build with their code
   std::cout << std::fixed << std::setprecision(2);
   std::cout << "cost per 10 ms world tick (median of batches, walking 200 mm/s turning 0.5 rad/s):\n";
   for (const auto& e : engines) std::cout << "  " << std::setw(20) << std::left << e.label << cost_us(e, ticks) << " us\n";

@@ -37,8 +37,9 @@ MATCH_CONFIG_WAIT_S = 10  # wall seconds sim_world may take to publish the match
 EXIT_FAILED, EXIT_SHIM_DIED = 1, 3
 
 # The walk engines robot_shim --walk-engine knows (robot::walk_engine_names(); the shim
-# checks the name again), the default first.
-WALK_ENGINES = ("walkcycle", "nao-joints")
+# checks the name again: runswift only in a build with -DTOUCHLINE_RUNSWIFT_DIR), the
+# default first.
+WALK_ENGINES = ("walkcycle", "nao-joints", "runswift")
 
 # Kick-off positions (field frame, team 0 defending -x) as fractions of the half length
 # and half width, and a heading: goalie, defender, two forwards, then more supporters.
@@ -61,8 +62,9 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
                        help=f"team {team}'s behaviour, e.g. py:Team, cpp:Team, py:Striker, with the skill's "
                             "parameters after commas, e.g. cpp:Team,walker=learned (default: --behaviour/--skill)")
     p.add_argument("--walk-engine", choices=WALK_ENGINES, default=WALK_ENGINES[0],
-                   help="every robot's walk engine: walkcycle (our WalkCycle, the default) or nao-joints (the same "
-                        "plan as a Nao's joint angles, through our kinematics)")
+                   help="every robot's walk engine: walkcycle (our WalkCycle, the default), nao-joints (the same "
+                        "plan as a Nao's joint angles, through our kinematics) or runswift (rUNSWift's own walk, in a "
+                        "build with -DTOUCHLINE_RUNSWIFT_DIR)")
     for team in (0, 1):
         p.add_argument(f"--walk-engine{team}", choices=WALK_ENGINES, metavar="ENGINE",
                        help=f"team {team}'s walk engine, one of {', '.join(WALK_ENGINES)} (default: --walk-engine)")

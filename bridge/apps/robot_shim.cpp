@@ -98,6 +98,16 @@ void handle_stop_signals(int team, int player) {
   sigaction(SIGTERM, &action, nullptr);
 }
 
+/// --walk-engine's help: the engines this build has.
+std::string walk_engine_help() {
+  std::string names;
+  for (const std::string& name : robot::walk_engine_names()) names += (names.empty() ? "" : ", ") + name;
+  return "the walk engine, one of " + names + ": walkcycle is our WalkCycle planning the feet every 10 ms; "
+         "nao-joints the same plan as a Nao V6's joint angles through our inverse kinematics, back to feet by "
+         "forward kinematics; runswift (a build with -DTOUCHLINE_RUNSWIFT_DIR) rUNSWift's own Walk2014Generator "
+         "at 12.2 ms";
+}
+
 int stop_status() { return 128 + (g_stop_signal ? g_stop_signal : SIGINT); }
 
 } // namespace
@@ -138,8 +148,7 @@ int main(int argc, char** argv) {
      "(33.3 ms) of CPU makes the robot miss frames as on the robot (the last request stays in force)")
     ("walk-config", po::value(&files.walk), "walk parameters file ([walk] section); default: the built-in walk")
     ("walk-engine", po::value(&def.engine.name)->default_value(def.engine.name),
-     "the walk engine: walkcycle (our WalkCycle, feet planned directly, 10 ms) or nao-joints (the same plan "
-     "as a Nao V6's joint angles through our inverse kinematics, back to feet by forward kinematics)")
+     walk_engine_help().c_str())
     ("kick-config", po::value(&files.kick), "kick and dribble parameters file ([kick], [dribble]); default: the built-in kick")
     ("field-config", po::value(&files.field), "the world config whose [field] the robot knows (landmarks for localisation); default: SPL 2011")
     ("perfect-localisation", po::bool_switch(&def.localisation.perfect), "the robot's pose from the truth instead of the filter (the ball still from the camera)")

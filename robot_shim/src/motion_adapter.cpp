@@ -92,9 +92,10 @@ bool MotionAdapter::accept(const WalkEngineOutput& out, Sample& sample) {
   }
   if (fault.empty()) {
     if (engine_->output_kind() == EngineOutputKind::kJoints) {
-      sample.feet = joint_feet_.update(out.joints);
+      // Position-controlled motors: the joints are where they were told, within their stops.
+      sensors_.joints = nao::clamp_to_ranges(out.joints);
+      sample.feet = joint_feet_.update(sensors_.joints);
       sample.odometry = body_of(sample.feet);
-      sensors_.joints = out.joints; // position-controlled: the joints are where they were told
     } else {
       sample = {out.feet, out.odometry};
     }

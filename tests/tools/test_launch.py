@@ -80,7 +80,7 @@ def test_walk_engines_are_chosen_per_team_and_known_to_the_shim(tmp_path):
     assert (args.walk_engine, args.walk_engine0, args.walk_engine1) == ("walkcycle", None, "nao-joints")
     shim_help = subprocess.run([str(ROOT / "build" / "bin" / "robot_shim"), "--help"], capture_output=True,
                                text=True, timeout=30).stdout
-    assert all(engine in shim_help for engine in WALK_ENGINES)
+    assert all(engine in shim_help for engine in WALK_ENGINES)  # runswift: named in the help of any build
     result = launch("--walk-engine0", "moonwalk")
     assert result.returncode == 2 and "--walk-engine0: invalid choice: 'moonwalk'" in result.stderr
     # A match with each team on another engine plays, and the joint walk moves its robots.

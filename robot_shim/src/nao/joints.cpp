@@ -1,5 +1,6 @@
 #include "touchline/robot/nao/joints.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -56,11 +57,14 @@ JointRange joint_range(int joint) {
   return {deg2rad(info.min_deg), deg2rad(info.max_deg)};
 }
 
+bool is_leg_joint(int joint) { return joint >= kLHipYawPitch && joint <= kRAnkleRoll; }
+
 std::optional<std::string> check_joints(const JointAngles& joints, float tolerance_rad) {
   for (int j = 0; j < kJointCount; ++j) {
     const float value = joints[static_cast<size_t>(j)];
     const JointRange range = joint_range(j);
-    if (std::isfinite(value) && value >= range.min_rad - tolerance_rad && value <= range.max_rad + tolerance_rad)
+    if (std::isfinite(value) &&
+        (!is_leg_joint(j) || (value >= range.min_rad - tolerance_rad && value <= range.max_rad + tolerance_rad)))
       continue;
     char line[160];
     std::snprintf(line, sizeof line, "%s = %g (range %.3f..%.3f rad)", joint_name(j), static_cast<double>(value),
@@ -68,6 +72,16 @@ std::optional<std::string> check_joints(const JointAngles& joints, float toleran
     return std::string(line);
   }
   return std::nullopt;
+}
+
+JointAngles clamp_to_ranges(const JointAngles& joints) {
+  JointAngles clamped = joints;
+  for (int j = 0; j < kJointCount; ++j) {
+    const JointRange range = joint_range(j);
+    float& value = clamped[static_cast<size_t>(j)];
+    value = std::min(std::max(value, range.min_rad), range.max_rad);
+  }
+  return clamped;
 }
 
 } // namespace touchline::robot::nao

@@ -16,22 +16,31 @@ TEST(NaoJoints, NamesFollowTheV6Order) {
   EXPECT_EQ(kRHipRoll, 13);
 }
 
-TEST(NaoJoints, ZeroIsWithinRangeExceptWhereTheRangeExcludesIt) {
+TEST(NaoJoints, ArmsBeyondTheirRangesMeetTheirStopsLegsBeyondTheirsAreFaults) {
   JointAngles joints{};
-  const auto fault = check_joints(joints, 0.01f);
-  ASSERT_TRUE(fault); // the elbows cannot straighten fully: LElbowRoll's range ends at -2 degrees
-  EXPECT_EQ(fault->rfind("LElbowRoll = 0 ", 0), 0u) << *fault;
-  joints[kLElbowRoll] = -0.1f;
-  joints[kRElbowRoll] = 0.1f;
+  // The elbows cannot straighten fully (LElbowRoll's range ends at -2 degrees): a walk that
+  // leaves the arms at 0 is no fault, the motors stop at the limit.
   EXPECT_FALSE(check_joints(joints, 0.01f));
+  const JointAngles clamped = clamp_to_ranges(joints);
+  EXPECT_FLOAT_EQ(clamped[kLElbowRoll], joint_range(kLElbowRoll).max_rad);
+  EXPECT_FLOAT_EQ(clamped[kRElbowRoll], joint_range(kRElbowRoll).min_rad);
+  EXPECT_EQ(clamped[kLKneePitch], 0.f);
+  joints[kRKneePitch] = -0.2f; // a knee bent backwards
+  const auto fault = check_joints(joints, 0.01f);
+  ASSERT_TRUE(fault);
+  EXPECT_EQ(fault->rfind("RKneePitch = -0.2 ", 0), 0u) << *fault;
+  EXPECT_TRUE(is_leg_joint(kLHipYawPitch) && is_leg_joint(kRAnkleRoll) && !is_leg_joint(kRShoulderPitch));
 }
 
 TEST(NaoJoints, ANaNOrAnAngleBeyondTheRangeIsNamed) {
   JointAngles joints{};
-  joints[kLElbowRoll] = -0.1f;
-  joints[kRElbowRoll] = 0.1f;
-  joints[kRKneePitch] = std::numeric_limits<float>::quiet_NaN();
+  joints[kRShoulderRoll] = std::numeric_limits<float>::quiet_NaN(); // NaN anywhere is a fault
   auto fault = check_joints(joints, 0.01f);
+  ASSERT_TRUE(fault);
+  EXPECT_NE(fault->find("RShoulderRoll = nan"), std::string::npos) << *fault;
+  joints[kRShoulderRoll] = 0;
+  joints[kRKneePitch] = std::numeric_limits<float>::quiet_NaN();
+  fault = check_joints(joints, 0.01f);
   ASSERT_TRUE(fault);
   EXPECT_NE(fault->find("RKneePitch = nan"), std::string::npos) << *fault;
   joints[kRKneePitch] = 0.5f;

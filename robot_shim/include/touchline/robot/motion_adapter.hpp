@@ -8,8 +8,9 @@
 // and hands the world how the feet moved over the world tick: the feet at its end are
 // the engine's sample there, or interpolated between the two samples around it. A joint
 // engine's output becomes feet through JointFeet (forward kinematics, stance sole fixed).
-// Every engine output is checked here, in one place: a NaN or a joint out of its range
-// stops the engine for good (the robot stands where it is; one warning names the joint).
+// Every engine output is checked here, in one place: a NaN, or a leg joint out of its
+// range, stops the engine for good (the robot stands where it is; one warning names the
+// joint). Joints are fed back, and turned into feet, as the motors' stops leave them.
 // Reads: blackboard.behaviour.request, blackboard.motion.fallen. Writes:
 // blackboard.motion (odometry, active, standing, kickPhase, head, ticks), the effector.
 #include <cstdint>
@@ -40,7 +41,7 @@ struct MotionDef {
   HeadDef head;
   nao::JointFeetDef joint_feet;        ///< a joint engine's feet: stance detection, leg dimensions
   nao::FootPressureDef foot_pressure;  ///< what the FSRs read
-  float joint_tolerance_rad = 0.01f;   ///< how far past its published range a joint command may go
+  float joint_tolerance_rad = 0.01f;   ///< how far past its published range a leg joint command may go
   std::ostream* warnings = nullptr;    ///< where the one warning of a bad engine output goes (nullptr: std::cerr)
 };
 

@@ -17,9 +17,13 @@ struct WalkEngineDef {
   /// plan through our inverse kinematics as a Nao's joint angles (walk_engines()).
   std::string name = "walkcycle";
   NaoJointWalkDef nao_joints; ///< the joint walk's own parameters
+  /// "runswift" (built with -DTOUCHLINE_RUNSWIFT_DIR): one of their option files whose walk
+  /// keys override their defaults; "" for their defaults.
+  std::string runswift_config;
 };
 
-/// Every name make_walk_engine knows, the default first.
+/// Every name make_walk_engine knows, the default first ("runswift" only in a build with
+/// their code).
 std::vector<std::string> walk_engine_names();
 
 /// The engine `engine.name` names, planning with `walk` and `kick`. Throws ConfigError

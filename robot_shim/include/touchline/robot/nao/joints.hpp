@@ -32,10 +32,16 @@ struct JointRange {
 };
 JointRange joint_range(int joint);
 
-/// What a walk engine may command: every joint finite and within its range widened by
-/// `tolerance_rad` (the motors clamp a hair beyond; a sign or unit error is far beyond).
-/// Nothing when fine, else one line naming the first bad joint:
-/// "LKneePitch = nan (range -0.092..2.113 rad)".
+/// Whether `joint` moves a foot (HipYawPitch .. RAnkleRoll).
+bool is_leg_joint(int joint);
+
+/// What a walk engine may command: every joint finite, and every leg joint within its
+/// range widened by `tolerance_rad` (a sign or unit error is far beyond; arms, head and
+/// hands beyond their ranges only meet their stops, see clamp_to_ranges). Nothing when
+/// fine, else one line naming the first bad joint: "LKneePitch = nan (range -0.092..2.113 rad)".
 std::optional<std::string> check_joints(const JointAngles& joints, float tolerance_rad);
+
+/// Where position-controlled motors end up when told `joints`: each within its range.
+JointAngles clamp_to_ranges(const JointAngles& joints);
 
 } // namespace touchline::robot::nao

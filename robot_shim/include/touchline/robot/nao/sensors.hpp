@@ -6,7 +6,6 @@
 #include <array>
 
 #include "touchline/robot/nao/joints.hpp"
-#include "touchline/robot/nao/leg_kinematics.hpp"
 
 namespace touchline::robot::nao {
 
