@@ -149,6 +149,9 @@ int main(int argc, char** argv) {
     ("walk-config", po::value(&files.walk), "walk parameters file ([walk] section); default: the built-in walk")
     ("walk-engine", po::value(&def.engine.name)->default_value(def.engine.name),
      walk_engine_help().c_str())
+    ("runswift-config", po::value(&def.engine.runswift_config),
+     "--walk-engine runswift: one of their option files (e.g. <clone>/image/home/nao/data/runswift.cfg); its walk "
+     "keys override their defaults")
     ("kick-config", po::value(&files.kick), "kick and dribble parameters file ([kick], [dribble]); default: the built-in kick")
     ("field-config", po::value(&files.field), "the world config whose [field] the robot knows (landmarks for localisation); default: SPL 2011")
     ("perfect-localisation", po::bool_switch(&def.localisation.perfect), "the robot's pose from the truth instead of the filter (the ball still from the camera)")

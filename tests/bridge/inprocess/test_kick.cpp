@@ -233,3 +233,15 @@ TEST(Kick, TheJointWalksKickThroughTheLegsSendsTheBallAsFar) {
     EXPECT_NEAR(joints.direction(), 0.f, 0.05f);
   }
 }
+
+TEST(Kick, EveryWalkEngineOfThisBuildKicksTheBallForward) {
+  // In a build with rUNSWift's walk (-DTOUCHLINE_RUNSWIFT_DIR) their own kick swings the
+  // foot through our kinematics and hits the ball by contact, as ours does.
+  for (const std::string& engine : robot::walk_engine_names()) {
+    Scene scene;
+    scene.engine = engine;
+    const Outcome out = play(scene);
+    EXPECT_GE(out.distance(), 1000.f) << engine;
+    EXPECT_NEAR(out.direction(), 0.f, 0.3f) << engine;
+  }
+}

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -73,4 +75,40 @@ TEST(RunswiftWalk, AnOptionFileThatDoesNotParseIsOneLineNamingIt) {
   } catch (const ConfigError& e) {
     EXPECT_EQ(std::string(e.what()).rfind(path + ": ", 0), 0u) << e.what();
   }
+}
+
+TEST(RunswiftWalk, TheirKickSwingsTheKickingFootForward) {
+  WalkEngineDef def;
+  def.name = "runswift";
+  std::ostringstream warnings;
+  MotionDef motion_def;
+  motion_def.warnings = &warnings;
+  MotionAdapter motion(make_walk_engine(def, WalkDef{}, KickDef{}), motion_def);
+  api::Blackboard blackboard;
+  for (int i = 0; i < 200; ++i) motion.tick(blackboard); // crouch, ready
+  for (auto foot : {api::ActionCommand::Foot::LEFT, api::ActionCommand::Foot::RIGHT}) {
+    blackboard.behaviour.request.body = api::ActionCommand::Body{};
+    blackboard.behaviour.request.body.actionType = api::ActionCommand::ActionType::KICK;
+    blackboard.behaviour.request.body.power = 1;
+    blackboard.behaviour.request.body.foot = foot;
+    float reach_mm = 0, fastest_mm_s = 0;
+    int kicking_ticks = 0;
+    for (int i = 0; i < 400; ++i) {
+      const TickMotion tick = motion.tick(blackboard);
+      const FeetPose& f = motion.feet();
+      const float heading = f.right.theta_rad;
+      const float dx = (f.left.x_mm - f.right.x_mm) * std::cos(heading) + (f.left.y_mm - f.right.y_mm) * std::sin(heading);
+      reach_mm = std::max(reach_mm, foot == api::ActionCommand::Foot::LEFT ? dx : -dx);
+      const FootMotion& m = foot == api::ActionCommand::Foot::LEFT ? tick.left : tick.right;
+      fastest_mm_s = std::max(fastest_mm_s, std::hypot(m.dx_mm, m.dy_mm) / 0.01f);
+      if (blackboard.motion.kickPhase == 2) ++kicking_ticks;
+      if (i > 50 && kicking_ticks > 0 && blackboard.motion.kickPhase == 0) blackboard.behaviour.request.body = api::ActionCommand::Body{};
+    }
+    std::cout << "rUNSWift kick, " << (foot == api::ActionCommand::Foot::LEFT ? "left" : "right") << ": foot " << reach_mm
+              << " mm ahead of the other at most, " << fastest_mm_s << " mm/s at fastest, " << kicking_ticks
+              << " ticks kicking\n";
+    EXPECT_GT(kicking_ticks, 0);
+    EXPECT_GT(reach_mm, 50.f);
+  }
+  EXPECT_EQ(warnings.str(), "");
 }

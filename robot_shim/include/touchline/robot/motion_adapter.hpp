@@ -41,7 +41,7 @@ struct MotionDef {
   HeadDef head;
   nao::JointFeetDef joint_feet;        ///< a joint engine's feet: stance detection, leg dimensions
   nao::FootPressureDef foot_pressure;  ///< what the FSRs read
-  float joint_tolerance_rad = 0.01f;   ///< how far past its published range a leg joint command may go
+  float joint_tolerance_rad = 0.1f;    ///< how far past its published range a leg joint command may go: the motor stops at the limit (rUNSWift's kick asks 3 degrees past the ankle's), a unit or sign error goes far beyond
   std::ostream* warnings = nullptr;    ///< where the one warning of a bad engine output goes (nullptr: std::cerr)
 };
 
