@@ -79,6 +79,22 @@ std::vector<double> velocity(const EngineCase& c, const api::ActionCommand::Body
   return {(end.x - at_3.x) / 5, (end.y - at_3.y) / 5, (heading - heading_at_3) / 5};
 }
 
+/// The engine's own odometry over the same 3 s to 8 s, where it keeps one (else empty).
+std::vector<double> own_velocity(const EngineCase& c, const api::ActionCommand::Body& body) {
+  std::ostringstream warnings;
+  MotionAdapter motion = make(c, warnings);
+  if (!motion.engine().own_odometry()) return {};
+  api::Blackboard blackboard;
+  blackboard.behaviour.request.body = body;
+  Pose2D at_3;
+  for (int tick = 1; tick <= 800; ++tick) {
+    motion.tick(blackboard);
+    if (tick == 300) at_3 = *motion.engine().own_odometry();
+  }
+  const Pose2D end = *motion.engine().own_odometry();
+  return {(end.x_mm - at_3.x_mm) / 5, (end.y_mm - at_3.y_mm) / 5, (end.theta_rad - at_3.theta_rad) / 5};
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -117,6 +133,10 @@ int main(int argc, char** argv) {
       const double got = velocity(e, r.body)[static_cast<size_t>(r.axis)];
       std::cout << "  " << e.label << " " << std::setprecision(r.axis == 2 ? 3 : 1) << got << " ("
                 << std::setprecision(1) << 100 * got / r.want << " %)";
+      const auto own = own_velocity(e, r.body);
+      if (!own.empty())
+        std::cout << " [its own odometry " << std::setprecision(r.axis == 2 ? 3 : 1) << own[static_cast<size_t>(r.axis)]
+                  << "]";
     }
     std::cout << "\n" << std::setprecision(2);
   }

@@ -80,7 +80,9 @@ class RunswiftWalk : public WalkEngine {
     for (int f = 0; f < nao::kFsrCount; ++f) sensors_.sensors[kTheirFsr[f]] = sensors.fsr_kg[static_cast<size_t>(f)];
     sensors_.sensors[Sensors::InertialSensor_GyroscopeX] = sensors.gyro_x_rad_s;
     sensors_.sensors[Sensors::InertialSensor_GyroscopeY] = sensors.gyro_y_rad_s;
-    sensors_.sensors[Sensors::InertialSensor_GyroscopeZ] = sensors.gyro_z_rad_s;
+    // Their code reads yaw rate clockwise-positive (the V5's sense; their MotionAdapter flips a
+    // V6's reading into it, and their odometry negates it back): ours is anticlockwise-positive.
+    sensors_.sensors[Sensors::InertialSensor_GyroscopeZ] = -sensors.gyro_z_rad_s;
     sensors_.sensors[Sensors::InertialSensor_AngleX] = sensors.angle_x_rad;
     sensors_.sensors[Sensors::InertialSensor_AngleY] = sensors.angle_y_rad;
 
@@ -99,6 +101,9 @@ class RunswiftWalk : public WalkEngine {
   }
 
   WalkEngineStatus status() const override { return status_; }
+  std::optional<Pose2D> own_odometry() const override {
+    return Pose2D{odometry_.forward, odometry_.left, odometry_.turn};
+  }
 
  private:
   Walk2014Generator walk_;

@@ -10,7 +10,9 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <utility>
 
+#include "touchline/angles.hpp"
 #include "touchline/ini.hpp"
 #include "touchline/robot/motion_adapter.hpp"
 #include "touchline/robot/walk_engines.hpp"
@@ -111,4 +113,31 @@ TEST(RunswiftWalk, TheirKickSwingsTheKickingFootForward) {
     EXPECT_GT(reach_mm, 50.f);
   }
   EXPECT_EQ(warnings.str(), "");
+}
+
+TEST(RunswiftWalk, ItsOwnOdometryAgreesWithWhatTheFeetDid) {
+  // Forward their odometry counts steps as the feet made them; turning it integrates the gyro
+  // (times their 1.05), which must therefore be fed in their sense of rotation.
+  for (const auto& [body, axis] : {std::pair{api::ActionCommand::walk(200, 0, 0), 0},
+                                   std::pair{api::ActionCommand::walk(0, 0, 0.8f), 2}}) {
+    WalkEngineDef def;
+    def.name = "runswift";
+    MotionAdapter motion(make_walk_engine(def, WalkDef{}, KickDef{}), MotionDef{});
+    api::Blackboard blackboard;
+    blackboard.behaviour.request.body = body;
+    double turned = 0;
+    float last = 0;
+    for (int i = 0; i < 600; ++i) {
+      motion.tick(blackboard);
+      turned += normalise_angle(blackboard.motion.odometry.theta - last);
+      last = blackboard.motion.odometry.theta;
+    }
+    const Pose2D own = *motion.engine().own_odometry();
+    if (axis == 0) {
+      EXPECT_NEAR(own.x_mm, blackboard.motion.odometry.x, 0.02 * blackboard.motion.odometry.x);
+    } else {
+      EXPECT_GT(turned, 3.0);
+      EXPECT_NEAR(own.theta_rad, turned, 0.1 * turned);
+    }
+  }
 }

@@ -7,6 +7,7 @@
 // team's own walk), which the MotionAdapter turns into feet (nao/joint_feet.hpp). The
 // MotionAdapter checks every output (finite, joints within range) before it is used.
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "touchline/frame.hpp"
@@ -50,6 +51,10 @@ class WalkEngine {
   /// robot senses now.
   virtual void tick(const api::ActionCommand::Body& request, const nao::Sensors& sensors, WalkEngineOutput& out) = 0;
   virtual WalkEngineStatus status() const = 0;
+  /// The engine's own odometry as it keeps it (a team's walk dead-reckons its steps: its
+  /// per-tick forward, left (mm) and turn (rad) summed), to compare with what the feet did;
+  /// nothing for an engine that keeps none.
+  virtual std::optional<Pose2D> own_odometry() const { return std::nullopt; }
   /// The WalkCycle and kick an engine of ours plans with; nothing for a foreign engine.
   virtual const GaitFeet* gait() const { return nullptr; }
 };
