@@ -27,6 +27,9 @@ TEST(WalkEngines, AnUnknownNameIsOneLineListingTheKnownOnes) {
     make_walk_engine(def, WalkDef{}, KickDef{});
     FAIL() << "no error";
   } catch (const ConfigError& e) {
-    EXPECT_STREQ(e.what(), "unknown walk engine 'moonwalk' (walkcycle, nao-joints)");
+    std::string known;
+    for (const std::string& name : walk_engine_names()) known += (known.empty() ? "" : ", ") + name;
+    EXPECT_EQ(std::string(e.what()), "unknown walk engine 'moonwalk' (" + known + ")");
+    EXPECT_EQ(known.rfind("walkcycle, nao-joints", 0), 0u); // (and runswift in a build with their code)
   }
 }
