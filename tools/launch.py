@@ -36,6 +36,11 @@ MATCH_CONFIG_WAIT_S = 10  # wall seconds sim_world may take to publish the match
 # signal stopped the launcher (128 + the signal).
 EXIT_FAILED, EXIT_SHIM_DIED = 1, 3
 
+# The walk engines robot_shim --walk-engine knows (robot::walk_engine_names(); the shim
+# checks the name again: runswift only in a build with -DTOUCHLINE_RUNSWIFT_DIR), the
+# default first.
+WALK_ENGINES = ("walkcycle", "nao-joints", "runswift")
+
 # Kick-off positions (field frame, team 0 defending -x) as fractions of the half length
 # and half width, and a heading: goalie, defender, two forwards, then more supporters.
 FORMATION = [(-0.9, 0.0, 0.0), (-0.6, 0.0, 0.0), (-0.3, 0.4, 0.0), (-0.3, -0.4, 0.0),
@@ -56,6 +61,13 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
         p.add_argument(f"--team{team}", metavar="LANG:SKILL[,KEY=VALUE...]",
                        help=f"team {team}'s behaviour, e.g. py:Team, cpp:Team, py:Striker, with the skill's "
                             "parameters after commas, e.g. cpp:Team,walker=learned (default: --behaviour/--skill)")
+    p.add_argument("--walk-engine", choices=WALK_ENGINES, default=WALK_ENGINES[0],
+                   help="every robot's walk engine: walkcycle (our WalkCycle, the default), nao-joints (the same "
+                        "plan as a Nao's joint angles, through our kinematics) or runswift (rUNSWift's own walk, in a "
+                        "build with -DTOUCHLINE_RUNSWIFT_DIR)")
+    for team in (0, 1):
+        p.add_argument(f"--walk-engine{team}", choices=WALK_ENGINES, metavar="ENGINE",
+                       help=f"team {team}'s walk engine, one of {', '.join(WALK_ENGINES)} (default: --walk-engine)")
     p.add_argument("--config", type=Path, default=ROOT / "config" / "spl2011.ini", help="world config")
     p.add_argument("--walk-config", type=Path, default=ROOT / "config" / "walk.ini", help="walk config")
     p.add_argument("--data-dir", type=Path, help="the robots' data directory (learned policies; default: "
@@ -206,7 +218,9 @@ class Launcher:
                              "--param", f"theta={theta:.3f}"]
             else:
                 behaviour = ["--behaviour", "py", "--param", f"skill={a.skill}"]
+            engine = getattr(a, f"walk_engine{team}") or a.walk_engine
             keeper.start(team, player, [bin_shim, "--team", team, "--player", player, "--walk-config", a.walk_config,
+                                        "--walk-engine", engine,
                                         "--field-config", a.config, "--lcm-url", a.lcm_url,
                                         *(["--data-dir", a.data_dir] if a.data_dir else []), *behaviour])
         length = f"{a.duration:.0f} s simulated" if a.duration else "two halves"

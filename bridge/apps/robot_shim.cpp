@@ -21,6 +21,7 @@
 #include "touchline/lcm/robot_node.hpp"
 #include "touchline/python/python_behaviour.hpp"
 #include "touchline/python/tick_guard.hpp"
+#include "touchline/robot/walk_engines.hpp"
 #include "touchline/robot_api/data.hpp"
 
 namespace po = boost::program_options;
@@ -97,6 +98,16 @@ void handle_stop_signals(int team, int player) {
   sigaction(SIGTERM, &action, nullptr);
 }
 
+/// --walk-engine's help: the engines this build has.
+std::string walk_engine_help() {
+  std::string names;
+  for (const std::string& name : robot::walk_engine_names()) names += (names.empty() ? "" : ", ") + name;
+  return "the walk engine, one of " + names + ": walkcycle is our WalkCycle planning the feet every 10 ms; "
+         "nao-joints the same plan as a Nao V6's joint angles through our inverse kinematics, back to feet by "
+         "forward kinematics; runswift (a build with -DTOUCHLINE_RUNSWIFT_DIR) rUNSWift's own Walk2014Generator "
+         "at 12.2 ms";
+}
+
 int stop_status() { return 128 + (g_stop_signal ? g_stop_signal : SIGINT); }
 
 } // namespace
@@ -136,6 +147,11 @@ int main(int argc, char** argv) {
      "charge the behaviour's CPU time to simulated time: a tick using more than one frame "
      "(33.3 ms) of CPU makes the robot miss frames as on the robot (the last request stays in force)")
     ("walk-config", po::value(&files.walk), "walk parameters file ([walk] section); default: the built-in walk")
+    ("walk-engine", po::value(&def.engine.name)->default_value(def.engine.name),
+     walk_engine_help().c_str())
+    ("runswift-config", po::value(&def.engine.runswift_config),
+     "--walk-engine runswift: one of their option files (e.g. <clone>/image/home/nao/data/runswift.cfg); its walk "
+     "keys override their defaults")
     ("kick-config", po::value(&files.kick), "kick and dribble parameters file ([kick], [dribble]); default: the built-in kick")
     ("head-config", po::value(&files.head), "head joint limits and speed file ([head]); default: the built-in head")
     ("field-config", po::value(&files.field), "the world config whose [field] the robot knows (landmarks for localisation); default: SPL 2011")
@@ -173,6 +189,11 @@ int main(int argc, char** argv) {
       throw po::error(std::string("--behaviour ") + e.what());
     }
     def = robot::load_robot_def(files, std::move(def));
+    try {
+      robot::make_walk_engine(def.engine, def.walk, def.kick); // an unknown name: a usage error, now
+    } catch (const ConfigError& e) {
+      throw po::error(std::string("--walk-engine: ") + e.what());
+    }
     if (!std::filesystem::is_directory(data_dir)) throw po::error("--data-dir " + data_dir + " is not a directory");
     // Before the interpreter: the check redirects stderr for a moment, so no other thread may run.
     if (const auto problem = transport::lcm_url_problem(node.lcm_url))

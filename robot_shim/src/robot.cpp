@@ -19,11 +19,18 @@ std::unique_ptr<api::Behaviour> required(std::unique_ptr<api::Behaviour> behavio
   if (!behaviour) throw std::invalid_argument("Robot needs a behaviour");
   return behaviour;
 }
+
+MotionDef motion_def(const RobotDef& def) {
+  MotionDef motion;
+  motion.head = def.head;
+  motion.joint_feet.legs = def.engine.nao_joints.legs;
+  return motion;
+}
 } // namespace
 
 Robot::Robot(RobotDef def, std::unique_ptr<api::Behaviour> behaviour)
     : def_(std::move(def)), behaviour_(required(std::move(behaviour))),
-      behaviour_adapter_(*behaviour_, def_.timing.cpu_clock), motion_(def_.walk, def_.head, def_.kick),
+      behaviour_adapter_(*behaviour_, def_.timing.cpu_clock), motion_(make_walk_engine(def_.engine, def_.walk, def_.kick), motion_def(def_)),
       localisation_(def_.localisation.filters, def_.localisation.perfect) {
   blackboard_.behaviour.skill = describe(def_.behaviour);
 }

@@ -74,6 +74,7 @@ SHIM = ["--team", "0", "--player", "1"]
     (SHIM + ["--behaviour", "goto", "--param", "x=abc"], "parameter x must be a number"),
     (SHIM + ["--walk-config", "/nonexistent.ini"], "cannot open config file (No such file or directory)"),
     (SHIM + ["--walk-config", ROOT / "config"], f"{ROOT / 'config'}: cannot open config file (it is a directory)"),
+    (SHIM + ["--walk-engine", "moonwalk"], "--walk-engine: unknown walk engine 'moonwalk' (walkcycle, nao-joints"),
     (SHIM + ["--kick-config", ROOT / "config"], f"{ROOT / 'config'}: cannot open config file (it is a directory)"),
     (SHIM + ["--field-config", ROOT / "config"], f"{ROOT / 'config'}: cannot open config file (it is a directory)"),
     (SHIM + ["--join-timeout", "nan"], "--join-timeout must be a number in [0.01, 86400] (got 'nan')"),
@@ -119,7 +120,8 @@ def test_help_documents_every_option():
     for option in ["--config", "--set", "--robots", "--duration", "--mode", "--speed", "--robot-timeout-ms",
                    "--join-timeout", "--seed", "--lcm-url", "--summary", "--log"]:
         assert option in world.stdout
-    for option in ["--team", "--player", "--behaviour", "--param", "--walk-config", "--lcm-url", "--join-timeout",
+    for option in ["--team", "--player", "--behaviour", "--param", "--walk-config", "--walk-engine", "--lcm-url",
+                   "--join-timeout",
                    "--world-timeout", "--tick-timeout-ms"]:
         assert option in shim.stdout
     assert "goto" in shim.stdout

@@ -72,6 +72,25 @@ def test_team_specs_carry_skill_parameters():
     assert "--team0 must be py:SKILL or cpp:SKILL, then any ,KEY=VALUE (got 'py:Team,walker')" in result.stderr
 
 
+def test_walk_engines_are_chosen_per_team_and_known_to_the_shim(tmp_path):
+    sys.path.insert(0, str(ROOT / "tools"))
+    from launch import WALK_ENGINES, parse_args
+
+    args = parse_args(["--walk-engine1", "nao-joints"])
+    assert (args.walk_engine, args.walk_engine0, args.walk_engine1) == ("walkcycle", None, "nao-joints")
+    shim_help = subprocess.run([str(ROOT / "build" / "bin" / "robot_shim"), "--help"], capture_output=True,
+                               text=True, timeout=30).stdout
+    assert all(engine in shim_help for engine in WALK_ENGINES)  # runswift: named in the help of any build
+    result = launch("--walk-engine0", "moonwalk")
+    assert result.returncode == 2 and "--walk-engine0: invalid choice: 'moonwalk'" in result.stderr
+    # A match with each team on another engine plays, and the joint walk moves its robots.
+    result = launch("--team-size", 1, "--duration", 4, "--behaviour", "goto", "--walk-engine0", "nao-joints",
+                    "--no-log", "--json", tmp_path / "m.json")
+    assert result.returncode == 0, result.stderr
+    robots = json.loads((tmp_path / "m.json").read_text())["robots"]
+    assert all(r["frames_answered"] == 120 for r in robots)
+
+
 def test_a_match_on_a_changed_field_is_placed_logged_and_drawn_on_that_field(tmp_path):
     result = launch("--team-size", 1, "--duration", 1, "--set", "field.length_mm=7000", "--log-dir", tmp_path)
     assert result.returncode == 0, result.stderr

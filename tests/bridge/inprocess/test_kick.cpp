@@ -5,6 +5,7 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <string>
 #include <utility>
 
 #include <gtest/gtest.h>
@@ -54,6 +55,7 @@ struct Scene {
   float side_mm = 0.f;       ///< ball centre off the swing line, + to the robot's left
   bool walk_after = false;
   float seconds = 12.f;      ///< simulated time to run (the ball must have stopped)
+  std::string engine = "walkcycle"; ///< the robot's walk engine
 };
 
 struct Outcome {
@@ -90,6 +92,7 @@ Outcome play(const Scene& scene) {
   robot::RobotDef def;
   def.id = id;
   def.behaviour.name = "KickOnce";
+  def.engine.name = scene.engine;
   match.add_robot(def, std::make_unique<KickOnce>(kick, scene.walk_after));
   match.start();
 
@@ -214,4 +217,31 @@ TEST(Kick, RobotWalksAgainAfterTheKickCompletes) {
   EXPECT_FALSE(out.motion.standing);
   // The kick takes 1.7 s from standing; the rest is walking at up to 200 mm/s.
   EXPECT_GT(out.robot_forward_mm, 300.f);
+}
+
+TEST(Kick, TheJointWalksKickThroughTheLegsSendsTheBallAsFar) {
+  // The nao-joints engine kicks with the same plan, through inverse and forward
+  // kinematics: the foot the world swings hits the ball as the walkcycle engine's does.
+  for (Foot foot : {Foot::LEFT, Foot::RIGHT}) {
+    Scene scene;
+    scene.foot = foot;
+    const Outcome feet = play(scene);
+    scene.engine = "nao-joints";
+    const Outcome joints = play(scene);
+    EXPECT_GE(joints.distance(), 3000.f);
+    EXPECT_NEAR(joints.distance(), feet.distance(), 0.05f * feet.distance());
+    EXPECT_NEAR(joints.direction(), 0.f, 0.05f);
+  }
+}
+
+TEST(Kick, EveryWalkEngineOfThisBuildKicksTheBallForward) {
+  // In a build with rUNSWift's walk (-DTOUCHLINE_RUNSWIFT_DIR) their own kick swings the
+  // foot through our kinematics and hits the ball by contact, as ours does.
+  for (const std::string& engine : robot::walk_engine_names()) {
+    Scene scene;
+    scene.engine = engine;
+    const Outcome out = play(scene);
+    EXPECT_GE(out.distance(), 1000.f) << engine;
+    EXPECT_NEAR(out.direction(), 0.f, 0.3f) << engine;
+  }
 }

@@ -107,6 +107,8 @@ class KickGenerator {
   const api::ActionCommand::Body& request() const { return request_; }
   /// The swing planned for the latched request.
   const SwingPlan& plan() const { return plan_; }
+  /// Ticks run in the current phase (in the swing: 0 .. plan().total_ticks()).
+  int ticks_in_phase() const { return ticks_in_phase_; }
   const KickDef& def() const { return def_; }
 
  private:

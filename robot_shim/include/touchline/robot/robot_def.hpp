@@ -19,6 +19,7 @@
 #include "touchline/robot/localisation/localiser.hpp"
 #include "touchline/robot/motion_adapter.hpp"
 #include "touchline/robot/walk_cycle.hpp"
+#include "touchline/robot/walk_engines.hpp"
 
 namespace touchline::robot {
 
@@ -62,6 +63,7 @@ std::string describe(const BehaviourDef& behaviour);
 struct RobotDef {
   RobotId id{0, 1};                  ///< team (0 or 1) and player number (1..7)
   WalkDef walk;                      ///< the gait: [walk] of config/walk.ini
+  WalkEngineDef engine;              ///< which walk engine runs the gait (--walk-engine): walkcycle, nao-joints
   KickDef kick;                      ///< kick and dribble swings: [kick], [dribble] of config/kick.ini
   HeadDef head;                      ///< the head that points the camera: [head] of config/head.ini
   LocalisationModeDef localisation;  ///< the field it knows ([field] of the world's config), filters or the truth

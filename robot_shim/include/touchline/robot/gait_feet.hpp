@@ -1,0 +1,39 @@
+#pragma once
+// GaitFeet: the feet our own walk plans: the WalkCycle for STAND and WALK, the
+// KickGenerator for KICK and DRIBBLE (other actions stand until their generators land). A
+// kick latches: once started it runs to completion whatever the request says meanwhile; a
+// KICK or DRIBBLE request seen after it completes starts another. Reads: the body
+// command. Writes: both feet, the odometry, the status (active command, kick phase).
+#include "touchline/robot/kick_generator.hpp"
+#include "touchline/robot/walk_cycle.hpp"
+#include "touchline/robot/walk_engine.hpp"
+#include "touchline/robot_api/action_command.hpp"
+
+namespace touchline::robot {
+
+class GaitFeet {
+ public:
+  GaitFeet(const WalkDef& walk, const KickDef& kick);
+
+  /// One tick of dt_s seconds (the kick counts 10 ms ticks whatever dt_s is).
+  void tick(const api::ActionCommand::Body& request, float dt_s);
+
+  /// Both feet after the last tick (the walk's, or the kick's mid-swing).
+  const FeetPose& feet() const { return feet_; }
+  Pose2D odometry() const { return walk_.odometry(); }
+  const WalkEngineStatus& status() const { return status_; }
+  const WalkCycle& walk() const { return walk_; }
+  const KickGenerator& kick() const { return kick_; }
+
+ private:
+  WalkCycle walk_;
+  KickGenerator kick_;
+  FeetPose feet_;
+  WalkEngineStatus status_;
+};
+
+/// The walk request a body command makes: WALK's forward/left/turn scaled by speed, zero
+/// for anything else.
+WalkRequest walk_request(const api::ActionCommand::Body& body);
+
+} // namespace touchline::robot
