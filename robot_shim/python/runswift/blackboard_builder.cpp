@@ -87,7 +87,32 @@ void fill_vision(const api::Blackboard& t, int our_colour, VisionBlackboard& v) 
     v.posts.push_back({rr_coord(p.rr), p.id >= 0 && p.id < 4 ? kPostTypes[p.id] : pNone, image_point(p.rr.heading)});
 }
 
+/// The body command motion is executing, in their terms.
+BodyCommand active_body(const api::ActionCommand::Body& b) {
+  using api::ActionCommand::ActionType;
+  BodyCommand body;
+  switch (b.actionType) {
+    case ActionType::NONE: body.actionType = NONE; break;
+    case ActionType::STAND: body.actionType = STAND; break;
+    case ActionType::WALK: body.actionType = WALK; break;
+    case ActionType::DRIBBLE: body.actionType = TURN_DRIBBLE; break;
+    case ActionType::KICK: body.actionType = KICK; break;
+    case ActionType::GETUP_FRONT: body.actionType = GETUP_FRONT; break;
+    case ActionType::GETUP_BACK: body.actionType = GETUP_BACK; break;
+    case ActionType::DEAD: body.actionType = LIMP; break;
+  }
+  const bool kick = b.actionType == ActionType::KICK || b.actionType == ActionType::DRIBBLE;
+  body.forward = static_cast<int>(std::lround(b.forward));
+  body.left = static_cast<int>(std::lround(b.left));
+  body.turn = kick ? b.bend : b.turn; // a kick's direction is their turn
+  body.power = b.power;
+  body.speed = b.speed;
+  body.foot = b.foot == api::ActionCommand::Foot::RIGHT ? FOOT_RIGHT : FOOT_LEFT;
+  return body;
+}
+
 void fill_motion(const api::Blackboard& t, MotionBlackboard& m) {
+  m.active.body = active_body(t.motion.active);
   auto& joints = m.sensors.joints;
   joints.angles[HeadYaw] = t.motion.headYaw;
   joints.angles[HeadPitch] = t.motion.headPitch;

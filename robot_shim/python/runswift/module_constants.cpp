@@ -4,9 +4,16 @@
 #include <cmath>
 
 #include "touchline/python/runswift/module.hpp"
+
+#include <pybind11/embed.h>
+
 #include "touchline/python/runswift/types.hpp"
 
 namespace py = pybind11;
+
+// Their `robot`, built in under its own name (in the file every user of the module links:
+// set_field_constants is here); the rUNSWift profile puts it in sys.modules as `robot`.
+PYBIND11_EMBEDDED_MODULE(touchline_runswift_robot, m) { touchline::python::runswift::define_runswift_module(m); }
 
 namespace touchline::python::runswift {
 

@@ -11,10 +11,6 @@
 
 namespace py = pybind11;
 
-// Their `robot`, built into the shim under its own name; the profile puts it in
-// sys.modules as `robot` for its behaviour only.
-PYBIND11_EMBEDDED_MODULE(touchline_runswift_robot, m) { touchline::python::runswift::define_runswift_module(m); }
-
 namespace touchline::python::runswift {
 
 namespace {
