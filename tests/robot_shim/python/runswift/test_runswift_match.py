@@ -58,3 +58,18 @@ def test_a_shim_without_behaviour_py_stands_until_the_file_appears(tmp_path):
         assert sum(ERROR_LINE in line for line in shim.stderr) == 1, "\n".join(shim.stderr)
     finally:
         match.kill_all()
+
+
+def test_the_same_seed_plays_the_same_match(tmp_path):
+    hashes = []
+    for run in range(2):
+        match = start_world(tmp_path, 4, 90, "--config", FIELD, "--set", "match.team_size=2",
+                            "--set", "rules.ready_s=5", "--seed", 7)
+        try:
+            for team in (0, 1):
+                runswift_shim(match, team, 1, BEHAVIOUR, "skill=Striker", "headskill=HeadScan")
+                runswift_shim(match, team, 2, BEHAVIOUR, "skill=Supporter", "headskill=HeadScan")
+            hashes.append(match.finish(timeout=300)["truth_hash"])
+        finally:
+            match.kill_all()
+    assert hashes[0] == hashes[1], hashes
