@@ -195,6 +195,11 @@ Blackboard BlackboardBuilder::build(const api::Blackboard& t) {
 
   ReceiverBlackboard& rx = bb.receiver;
   rx.team = def_.team_numbers[team];
+  // The team ball: the newest sighting, ours or one a teammate broadcast.
+  StateEstimationBlackboard& se = bb.stateEstimation;
+  if (t.vision.ballSeen)
+    team_ball_ = {t.localisation.ballPos.x, t.localisation.ballPos.y, t.localisation.ballVel.x, t.localisation.ballVel.y,
+                  t.utime};
   auto hear = [&](int number, const Broadcast& b, int64_t sent_us) {
     const int i = number - 1;
     rx.data[i] = b.data;
@@ -210,7 +215,24 @@ Blackboard BlackboardBuilder::build(const api::Blackboard& t) {
   };
   for (const api::TeamMessage& m : t.receiver.messages) {
     if (m.playerNumber < 1 || m.playerNumber > kRobotsPerTeam || m.playerNumber == player) continue;
-    if (const auto heard = decode_broadcast(m.data)) hear(m.playerNumber, *heard, m.utime);
+    const auto heard = decode_broadcast(m.data);
+    if (!heard) continue;
+    hear(m.playerNumber, *heard, m.utime);
+    int64_t& read = heard_utime_[static_cast<size_t>(m.playerNumber - 1)];
+    if (m.utime > read && heard->data.sharedStateEstimationBundle.haveBallUpdate && !heard->penalised) {
+      se.hadTeamBallUpdate = true; // a teammate's sighting arrived this frame
+      if (m.utime > team_ball_.utime) {
+        // The sender's velocity is in its own frame: back into the field's.
+        const AbsCoord& v = heard->data.sharedStateEstimationBundle.ballVelRRC;
+        const float c = std::cos(heard->data.robotPos[2]), s = std::sin(heard->data.robotPos[2]);
+        team_ball_ = {heard->data.ballPosAbs.x, heard->data.ballPosAbs.y, c * v.x - s * v.y, s * v.x + c * v.y, m.utime};
+      }
+    }
+    read = std::max(read, m.utime);
+  }
+  if (team_ball_.utime >= 0) {
+    se.teamBallPos = {team_ball_.x, team_ball_.y, 0};
+    se.teamBallVel = {team_ball_.vx, team_ball_.vy, 0};
   }
   hear(player, own_broadcast(t), t.utime); // a robot hears its own broadcasts
   return bb;

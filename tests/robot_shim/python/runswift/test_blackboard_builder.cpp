@@ -254,3 +254,34 @@ TEST(BlackboardBuilder, WithTheRobotsAdaptersEveryPositionIsTheWorldsTruthInTheT
     EXPECT_EQ(bb.vision.posts[0].type, team == 0 ? pHomeLeft : pAwayLeft);
   }
 }
+
+TEST(BlackboardBuilder, TheTeamBallIsTheNewestSightingOursOrATeammates) {
+  BlackboardBuilder builder;
+  api::Blackboard t = board(); // we see the ball at (1000, 0), rolling +x at 100 mm/s
+  Blackboard bb = builder.build(t);
+  EXPECT_FLOAT_EQ(bb.stateEstimation.teamBallPos.x, 1000);
+  EXPECT_FALSE(bb.stateEstimation.hadTeamBallUpdate);
+
+  // We lose it; a teammate facing -x saw it at (-500, 300) rolling towards its own +x.
+  t.utime += 1000000;
+  t.vision.ballSeen = false;
+  Broadcast mate;
+  mate.data.robotPos = {0, 0, kPi};
+  mate.data.ballPosAbs = {-500, 300, 0};
+  mate.data.sharedStateEstimationBundle.haveBallUpdate = true;
+  mate.data.sharedStateEstimationBundle.ballVelRRC = {200, 0, 0};
+  t.receiver.messages.push_back({4, t.utime - 100000, encode_broadcast(mate)});
+  bb = builder.build(t);
+  EXPECT_TRUE(bb.stateEstimation.hadTeamBallUpdate);
+  EXPECT_FLOAT_EQ(bb.stateEstimation.teamBallPos.x, -500);
+  EXPECT_FLOAT_EQ(bb.stateEstimation.teamBallPos.y, 300);
+  EXPECT_NEAR(bb.stateEstimation.teamBallVel.x, -200, 1e-3); // its +x is the field's -x
+  EXPECT_NEAR(bb.stateEstimation.teamBallVel.y, 0, 1e-3);
+  EXPECT_FLOAT_EQ(bb.stateEstimation.ballPos.x, 1000); // our own belief is unchanged
+
+  // The same message again is no new update; our own sighting later wins again.
+  t.utime += 33333;
+  EXPECT_FALSE(builder.build(t).stateEstimation.hadTeamBallUpdate);
+  t.vision.ballSeen = true;
+  EXPECT_FLOAT_EQ(builder.build(t).stateEstimation.teamBallPos.x, 1000);
+}

@@ -2,7 +2,8 @@
 // Their Blackboard, built each frame from Touchline's (what the robot's adapters wrote):
 // - stateEstimation: localisation's pose and ball, their uncertainties (the covariances'
 //   ellipse-sigma products, as their filters report them), ball velocity (field and robot
-//   frame), obstacles from the robots seen; the team ball is our own ball.
+//   frame), obstacles from the robots seen. The team ball is the most recent sighting, our
+//   own or a teammate's broadcast one (hadTeamBallUpdate: a teammate's arrived this frame).
 // - vision: timestamp (simulated us), the ball seen (BallInfo), robots and goal posts seen.
 // - motion: head joint angles, sonars (m), fallen (as a body angle), isStiff.
 // - gameController: state, first half, kicking team, score, time, our penalty
@@ -49,6 +50,14 @@ class BlackboardBuilder {
   BlackboardBuilderDef def_;
   BehaviourSharedData shared_;   ///< of the last request
   int last_action_ = NONE;       ///< of the last request
+  /// The most recent ball sighting, ours or a teammate's (field frame, when seen).
+  struct Sighting {
+    float x = 0, y = 0;   ///< mm
+    float vx = 0, vy = 0; ///< mm/s
+    int64_t utime = -1;   ///< -1: none yet
+  };
+  Sighting team_ball_;
+  std::array<int64_t, kRobotsPerTeam> heard_utime_{}; ///< each teammate's newest message already read
 };
 
 /// Product of the sigmas of the 2x2 covariance's ellipse axes (sqrt of its determinant), mm^2.
