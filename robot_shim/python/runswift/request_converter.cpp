@@ -123,7 +123,8 @@ api::ActionCommand::All RequestConverter::convert(const BehaviourRequest& reques
   AC::All all;
   all.head = convert_head(request.actions.head);
   all.leds.chest = led_colour(request.actions.leds.chestButton);
-  if (busy_until_us_ >= 0 && utime_us < busy_until_us_) { // standing through a special action
+  // Standing through a special action (time going backwards is a new run: it is over).
+  if (busy_until_us_ >= 0 && utime_us >= busy_since_us_ && utime_us < busy_until_us_) {
     all.body = AC::stand();
     return all;
   }
@@ -135,6 +136,7 @@ api::ActionCommand::All RequestConverter::convert(const BehaviourRequest& reques
   }
   const double duration_s = action_duration_s(type);
   busy_type_ = type;
+  busy_since_us_ = utime_us;
   busy_until_us_ = utime_us + static_cast<int64_t>(std::llround(duration_s * 1e6));
   all.body = AC::stand();
   if (warned_.insert(type).second && warn_) {

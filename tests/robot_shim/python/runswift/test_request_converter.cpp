@@ -156,6 +156,16 @@ TEST(RequestConverter, AnUnsimulatedActionStandsForItsDurationWithOneWarningPerT
   EXPECT_NE(warnings[1].find("SIGNAL_GOAL_LEFT"), std::string::npos);
 }
 
+TEST(RequestConverter, TimeGoingBackwardsEndsAnActionInProgress) {
+  RequestConverter c(nullptr);
+  BodyCommand sit;
+  sit.actionType = SIT;
+  c.convert(with_body(sit), 5000000);
+  EXPECT_EQ(c.busy_with(), SIT);
+  // a new run of frames (a restarted match, a replay) starts from time 0
+  EXPECT_EQ(c.convert(with_body(walk(100, 0, 0)), 0).body.actionType, AC::ActionType::WALK);
+}
+
 TEST(RequestConverter, EveryActionTypeConvertsWithoutThrowing) {
   RequestConverter c(nullptr);
   int64_t t = 0;

@@ -68,6 +68,7 @@ class RequestConverter {
   RunswiftWalkLimits limits_;
   std::set<int> warned_;
   int busy_type_ = NONE;
+  int64_t busy_since_us_ = 0;  ///< when busy_type_ began
   int64_t busy_until_us_ = -1; ///< standing through busy_type_ until then; -1: not
 };
 
