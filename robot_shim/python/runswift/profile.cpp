@@ -1,5 +1,6 @@
 #include "touchline/python/runswift/profile.hpp"
 
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 
@@ -15,6 +16,12 @@ namespace touchline::python::runswift {
 
 namespace {
 
+/// The LOG_PATH the last profile made (and removes when it goes): not the user's.
+std::string& last_made_log_path() {
+  static std::string path;
+  return path;
+}
+
 std::string type_name(py::handle value) {
   if (value.is_none()) return "None";
   const py::handle type = py::type::handle_of(value);
@@ -28,22 +35,34 @@ class RunswiftProfile final : public PythonProfile {
   explicit RunswiftProfile(RunswiftDef def)
       : def_(std::move(def)), builder_(def_.blackboard),
         converter_([this](const std::string& line) { warn(line); }, def_.walk) {}
+  ~RunswiftProfile() override {
+    std::error_code ec; // a log folder we made goes with us; one the user named stays
+    if (!made_log_path_.empty()) std::filesystem::remove_all(made_log_path_, ec);
+  }
+  RunswiftProfile(const RunswiftProfile&) = delete;
+  RunswiftProfile& operator=(const RunswiftProfile&) = delete;
 
   void prepare(const std::string& directory) override {
     // Through os.environ, which also sets the process environment their code may read.
     py::object environ = py::module_::import("os").attr("environ");
     environ["BEHAVIOUR_ROOT"] = directory;
-    if (environ.attr("pop")("RUNSWIFT_CHECKOUT_DIR", py::none()).is_none() == false)
+    if (!environ.attr("pop")("RUNSWIFT_CHECKOUT_DIR", py::none()).is_none())
       warn("RUNSWIFT_CHECKOUT_DIR unset for the behaviour: their Simulation module would replace sys.path");
     // Their robot runs their code in Python 2.7 (PythonSkill); the one Python 2 builtin it
     // uses that Python 3 moved (reduce, in util/MathUtil.py) is put back where it was.
     py::module_ builtins = py::module_::import("builtins");
     if (!py::hasattr(builtins, "reduce")) builtins.attr("reduce") = py::module_::import("functools").attr("reduce");
-    if (!environ.contains("LOG_PATH")) {
+    // Their Log module lists LOG_PATH and writes to its newest folder.
+    const std::string log_path = environ.contains("LOG_PATH") ? environ["LOG_PATH"].cast<std::string>() : "";
+    const bool fresh = log_path.empty() || !std::filesystem::is_directory(log_path);
+    if (fresh && !log_path.empty() && log_path != last_made_log_path())
+      warn("LOG_PATH " + log_path + " is not a folder: their Log module gets a fresh one");
+    if (fresh) {
       // Their Log module writes to the newest folder under LOG_PATH.
       const std::string root = py::module_::import("tempfile").attr("mkdtemp")("", "touchline-runswift-").cast<std::string>();
       py::module_::import("os").attr("makedirs")(root + "/0", py::arg("exist_ok") = true);
       environ["LOG_PATH"] = root;
+      made_log_path_ = last_made_log_path() = root;
     }
   }
 
@@ -85,6 +104,7 @@ class RunswiftProfile final : public PythonProfile {
   BlackboardBuilder builder_;
   RequestConverter converter_;
   int64_t last_broadcast_us_ = -1;
+  std::string made_log_path_; ///< the LOG_PATH folder we made ("": the user's)
 };
 
 } // namespace

@@ -151,6 +151,8 @@ TEST_F(RunswiftRobot, TheirBehaviourFindsItsRootItsRobotModuleAndAHarmlessSimula
   EXPECT_EQ(seen["headskill"].cast<std::string>(), "HeadFindBall");
   EXPECT_EQ(seen["timestamp"].cast<int64_t>(), 0);
   EXPECT_TRUE(behaviour_->healthy()) << log_.str();
+  robot_.reset(); // the log folder the profile made goes with it
+  EXPECT_FALSE(fs::exists(seen["log_path"].cast<std::string>()));
 }
 
 TEST_F(RunswiftRobot, TheRequestIsAppliedAndTheSharedDataBroadcastOnceASecond) {

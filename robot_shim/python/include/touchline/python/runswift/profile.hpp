@@ -3,7 +3,8 @@
 // folder's behaviour.py as their PythonSkill does, unmodified.
 // - Before the first import: BEHAVIOUR_ROOT is the folder (where their skill factory looks
 //   for skills), which PythonBehaviour puts first on sys.path; LOG_PATH, where their Log
-//   module writes, is a fresh folder unless the user set one; RUNSWIFT_CHECKOUT_DIR is
+//   module writes, is a fresh temp folder (removed with the profile) unless the user set
+//   one; RUNSWIFT_CHECKOUT_DIR is
 //   removed, so that their Simulation module (imported first by behaviour.py) leaves
 //   sys.path alone.
 // - `import robot` gives their API (module.hpp), with the field of the world's config.
