@@ -60,7 +60,9 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     for team in (0, 1):
         p.add_argument(f"--team{team}", metavar="LANG:SKILL[,KEY=VALUE...]",
                        help=f"team {team}'s behaviour, e.g. py:Team, cpp:Team, py:Striker, with the skill's "
-                            "parameters after commas, e.g. cpp:Team,walker=learned (default: --behaviour/--skill)")
+                            "parameters after commas, e.g. cpp:Team,walker=learned; runswift:SKILL (e.g. "
+                            "runswift:WalkToPoint,headskill=HeadFindBall) runs a rUNSWift behaviour folder "
+                            "(--runswift-dir) (default: --behaviour/--skill)")
     p.add_argument("--walk-engine", choices=WALK_ENGINES, default=WALK_ENGINES[0],
                    help="every robot's walk engine: walkcycle (our WalkCycle, the default), nao-joints (the same "
                         "plan as a Nao's joint angles, through our kinematics) or runswift (rUNSWift's own walk, in a "
@@ -84,6 +86,9 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
                    help="override a world config value (repeatable), e.g. rules.half_s=300")
     p.add_argument("--build-dir", type=Path, default=DEFAULT_BUILD)
     p.add_argument("--lcm-url", default="udpm://239.255.76.67:7667?ttl=0")
+    p.add_argument("--runswift-dir", type=Path,
+                   help="the rUNSWift behaviours folder runswift:SKILL teams run (e.g. a clone's "
+                        "image/home/nao/data/behaviours)")
     p.add_argument("--host-network", action="store_true",
                    help="use this machine's network instead of a private namespace (to watch in lcm-spy)")
     p.add_argument("--json", type=Path, help="also write the match summary here as JSON")
@@ -95,8 +100,10 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
         p.error("--team-size must be 1..7")
     for team in (0, 1):
         spec = getattr(args, f"team{team}")
-        if spec is not None and team_behaviour(spec) is None:
-            p.error(f"--team{team} must be py:SKILL or cpp:SKILL, then any ,KEY=VALUE (got '{spec}')")
+        if spec is not None and team_behaviour(spec, args.runswift_dir or Path(".")) is None:
+            p.error(f"--team{team} must be py:SKILL, cpp:SKILL or runswift:SKILL, then any ,KEY=VALUE (got '{spec}')")
+        if spec is not None and spec.startswith("runswift:") and args.runswift_dir is None:
+            p.error(f"--team{team} {spec} needs --runswift-dir (a rUNSWift behaviours folder)")
     if args.duration is not None and args.duration <= 0:
         p.error("--duration must be > 0")
     if args.robot_timeout_ms is not None and args.robot_timeout_ms <= 0:
@@ -107,18 +114,20 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     return args
 
 
-def team_behaviour(spec: str) -> list | None:
+def team_behaviour(spec: str, runswift_dir: Path | None = None) -> list | None:
     """robot_shim's behaviour options for a --team spec (LANG:SKILL[,KEY=VALUE...]), or
-    None if it is malformed."""
+    None if it is malformed. runswift:SKILL runs the folder `runswift_dir`."""
     head, *assignments = spec.split(",")
     language, _, skill = head.partition(":")
-    if language not in ("py", "cpp") or not skill or ":" in skill:
+    if language not in ("py", "cpp", "runswift") or not skill or ":" in skill:
         return None
     if any("=" not in a or a.startswith("=") for a in assignments):
         return None
     params = [arg for a in assignments for arg in ("--param", a)]
     if language == "py":
         return ["--behaviour", "py", "--param", f"skill={skill}", *params]
+    if language == "runswift":
+        return ["--behaviour", "runswift", "--python-dir", str(runswift_dir), "--param", f"skill={skill}", *params]
     return ["--behaviour", skill, *params]
 
 
@@ -212,7 +221,7 @@ class Launcher:
         for team, player, x, y, theta in targets:
             spec = getattr(a, f"team{team}")
             if spec:
-                behaviour = team_behaviour(spec)
+                behaviour = team_behaviour(spec, a.runswift_dir)
             elif a.behaviour == "goto":
                 behaviour = ["--behaviour", "goto", "--param", f"x={x:.0f}", "--param", f"y={y:.0f}",
                              "--param", f"theta={theta:.3f}"]

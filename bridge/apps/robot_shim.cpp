@@ -20,6 +20,7 @@
 #include "touchline/lcm/lcm_url.hpp"
 #include "touchline/lcm/robot_node.hpp"
 #include "touchline/python/python_behaviour.hpp"
+#include "touchline/python/runswift/profile.hpp"
 #include "touchline/python/tick_guard.hpp"
 #include "touchline/robot/walk_engines.hpp"
 #include "touchline/robot_api/data.hpp"
@@ -54,6 +55,12 @@ std::string behaviour_list() {
          "      A tick() that runs longer than --tick-timeout-ms (a loop that never ends, a call that\n"
          "      blocks) is interrupted where it hangs (touchline.TickTimeout, traceback printed) and\n"
          "      not called again until the files change; the robot stands as above meanwhile.\n"
+         "  runswift: a rUNSWift behaviour folder (--python-dir, e.g. a clone's image/home/nao/data/\n"
+         "      behaviours), unmodified: its behaviour.py with their robot module, their Blackboard\n"
+         "      and BehaviourRequest (docs/runswift_behaviour.md). --param skill=NAME (default Game),\n"
+         "      headskill=NAME (HeadCentre), positioning=NAME, broadcast_ms=N (1000: one team message\n"
+         "      a second), players_per_team=N (5). FIELD_LENGTH etc. come from --field-config.\n"
+         "      Reload, timeout and errors as for py; no behaviour.py: the robot stands until it appears.\n"
          "Stopping: SIGINT or SIGTERM stops the shim within 2 s even while its behaviour hangs\n"
          "(running Python is interrupted; anything else is cut short), exit status 128 + the\n"
          "signal's number (130, 143).\n";
@@ -208,6 +215,13 @@ int main(int argc, char** argv) {
       interpreter.emplace(/*init_signal_handlers=*/false, 0, nullptr, /*add_program_dir_to_path=*/false);
       python.name = "robot_shim " + std::to_string(def.id.team) + "/" + std::to_string(def.id.player);
       python.tick_timeout_us = tick_timeout_ms * 1000;
+    }
+    if (def.behaviour.name == "runswift") {
+      python::runswift::RunswiftDef runswift;
+      runswift.field = python::runswift::load_spl_field(files.field);
+      python::runswift::apply_params(def.behaviour.params, runswift);
+      runswift.name = python.name;
+      python.profile = python::runswift::make_profile(std::move(runswift));
     }
     behaviour = apps::make_behaviour(def, std::move(python));
   } catch (const po::error& e) {

@@ -10,6 +10,7 @@
 #include <pybind11/embed.h>
 #include <pybind11/stl.h>
 
+#include "touchline/python/python_profile.hpp"
 #include "touchline/python/robot_module.hpp"
 #include "touchline/python/tick_guard.hpp"
 
@@ -70,7 +71,23 @@ std::string type_name(py::handle value) {
   return module == "builtins" ? qualname : module + "." + qualname;
 }
 
+/// Touchline's own: the robot API module, the const Blackboard, a robot.All back.
+class TouchlineProfile final : public PythonProfile {
+ public:
+  py::module_ robot_module() override { return py::module_::import("robot"); }
+  py::object argument(const api::Blackboard& blackboard) override {
+    return py::cast(&blackboard, py::return_value_policy::reference);
+  }
+  AC::All request(py::handle result, const api::Blackboard&) override {
+    if (!py::isinstance<AC::All>(result))
+      throw RequestError("tick() returned " + type_name(result) + ", expected robot.All");
+    return result.cast<AC::All>();
+  }
+};
+
 } // namespace
+
+std::shared_ptr<PythonProfile> touchline_profile() { return std::make_shared<TouchlineProfile>(); }
 
 bool PythonBehaviour::FileStamp::operator==(const FileStamp& other) const {
   return mtime_ns == other.mtime_ns && ctime_ns == other.ctime_ns && size == other.size;
@@ -121,11 +138,13 @@ PythonBehaviour::PythonBehaviour(PythonBehaviourDef def) : def_(std::move(def)) 
   def_.directory = directory;
   prefix_ = directory.string() + "/";
   if (def_.module.empty()) throw PythonBehaviourError("empty Python module name");
+  if (!def_.profile) def_.profile = touchline_profile();
 
   py_ = std::make_unique<Python>();
   try {
     py_->sys = py::module_::import("sys");
-    py_->robot = py::module_::import("robot");
+    def_.profile->prepare(def_.directory.string());
+    py_->robot = def_.profile->robot_module();
     py_->traceback = py::module_::import("traceback");
     py_->importlib = py::module_::import("importlib.machinery");
     // No .pyc from us: its freshness check uses whole seconds, so a second edit within
@@ -134,10 +153,7 @@ PythonBehaviour::PythonBehaviour(PythonBehaviourDef def) : def_(std::move(def)) 
     for (const auto& [key, value] : def_.params) py_->params[py::str(key)] = py::str(value);
     activate();
     // The module must come from the directory, not from anywhere else on sys.path.
-    const std::string top = def_.module.substr(0, def_.module.find('.'));
-    py::list search_path;
-    search_path.append(py::str(def_.directory.string()));
-    if (py_->importlib.attr("PathFinder").attr("find_spec")(top, search_path).is_none())
+    if (!module_present() && def_.profile->module_required())
       throw PythonBehaviourError("no Python module '" + def_.module + "' in " + def_.directory.string());
   } catch (const py::error_already_set& e) {
     leave();
@@ -184,6 +200,7 @@ void PythonBehaviour::activate() {
   if (g_active) g_active->stash();
   py::dict modules = py_->sys.attr("modules");
   for (auto [name, module] : py_->stashed) modules[name] = module;
+  modules["robot"] = py_->robot; // this behaviour's framework's `robot`
   py_->stashed = py::dict();
   py_->robot.attr("params") = py_->params;
   py_->robot.attr("team") = def_.team;
@@ -216,9 +233,20 @@ int64_t PythonBehaviour::now_us() const {
   return duration_cast<microseconds>(steady_clock::now().time_since_epoch()).count();
 }
 
+bool PythonBehaviour::module_present() const {
+  const std::string top = def_.module.substr(0, def_.module.find('.'));
+  py::list search_path;
+  search_path.append(py::str(def_.directory.string()));
+  return !py_->importlib.attr("PathFinder").attr("find_spec")(top, search_path).is_none();
+}
+
 bool PythonBehaviour::load(bool starting) {
   py_->module = py::object();
   py_->tick = py::object();
+  if (!def_.profile->module_required() && !module_present()) { // one line instead of a traceback
+    report_once("no " + def_.module + ".py (nor package " + def_.module + "/) in " + def_.directory.string(), nullptr);
+    return false;
+  }
   try {
     // Through the C API, which cuts importlib's own frames from the traceback.
     py_->module = py::module_::import(def_.module.c_str());
@@ -276,14 +304,12 @@ api::ActionCommand::All PythonBehaviour::tick(const api::Blackboard& blackboard)
       healthy_ = false;
       return error_request();
     }
-    const py::object result = py_->tick(py::cast(&blackboard, py::return_value_policy::reference));
-    if (!py::isinstance<AC::All>(result)) {
-      healthy_ = false;
-      report_once("tick() returned " + type_name(result) + ", expected robot.All", nullptr);
-      return error_request();
-    }
+    const py::object result = py_->tick(def_.profile->argument(blackboard));
+    AC::All request = def_.profile->request(result, blackboard);
     healthy_ = true;
-    return result.cast<AC::All>();
+    return request;
+  } catch (const RequestError& e) {
+    report_once(e.what(), nullptr);
   } catch (const py::error_already_set& e) {
     if (is_stopping(e)) { // asked to stop, not the behaviour's fault: nothing to report
       healthy_ = false;
@@ -301,6 +327,10 @@ api::ActionCommand::All PythonBehaviour::tick(const api::Blackboard& blackboard)
     report_once("Python behaviour failed", nullptr);
   }
   healthy_ = false;
+  try {
+    def_.profile->on_error();
+  } catch (...) { // nothing a profile does on the way to standing may stop the robot
+  }
   return error_request();
 }
 

@@ -43,6 +43,8 @@ void write_game_controller(const SenseFrame& frame, const RobotSense& sense, api
   gc.penalised = sense.penalised;
   gc.score = frame.game.score;
   gc.secsRemaining = frame.game.secs_remaining;
+  gc.firstHalf = frame.game.first_half;
+  gc.kickOffTeam = frame.game.kickoff_team;
   gc.setPlay = to_api(frame.game.set_play);
   gc.setPlayTeam = frame.game.set_play_team;
 }
@@ -51,14 +53,27 @@ void write_vision(const SenseFrame& frame, const RobotSense& sense, api::Blackbo
   auto& vision = blackboard.vision;
   vision.frame = frame.frame;
   vision.ballSeen = false;
+  vision.posts.clear();
+  vision.robots.clear();
   for (const Observation& o : sense.seen) {
+    const api::RRCoord rr{o.distance_mm, o.heading_rad};
+    if (o.kind == ObjectKind::kGoalPost) {
+      // The world numbers the posts in team 0's frame; team 1's own goal is the world's 2, 3.
+      vision.posts.push_back({rr, sense.id.team == 0 ? o.id : (o.id + 2) % 4, false});
+    } else if (o.kind == ObjectKind::kTeammate || o.kind == ObjectKind::kOpponent) {
+      vision.robots.push_back({rr, o.id, o.kind == ObjectKind::kTeammate});
+    }
     if (o.kind != ObjectKind::kBall || (vision.ballSeen && o.distance_mm >= vision.ball.distance)) continue;
     vision.ballSeen = true;
-    vision.ball = {o.distance_mm, o.heading_rad};
+    vision.ball = rr;
   }
 }
 
-void write_fall(const RobotSense& sense, api::Blackboard& blackboard) { blackboard.motion.fallen = sense.fallen; }
+void write_fall(const RobotSense& sense, api::Blackboard& blackboard) {
+  blackboard.motion.fallen = sense.fallen;
+  blackboard.motion.sonarLeft = sense.sonar_left;
+  blackboard.motion.sonarRight = sense.sonar_right;
+}
 
 void write_receiver(const RobotSense& sense, api::Blackboard& blackboard) {
   auto& messages = blackboard.receiver.messages;

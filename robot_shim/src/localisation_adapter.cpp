@@ -17,6 +17,9 @@ void to_team_frame(api::LocalisationBlackboard& loc) {
   loc.ballPos.theta = 0;
   loc.teamBallPos = turned(loc.teamBallPos);
   loc.teamBallPos.theta = 0;
+  loc.ballVel = {-loc.ballVel.x, -loc.ballVel.y, 0}; // a velocity turns with the frame
+  // x and y change sign, theta does not: only the position-heading terms flip.
+  for (size_t i : {2u, 5u, 6u, 7u}) loc.robotPosCovariance[i] = -loc.robotPosCovariance[i];
 }
 
 } // namespace
@@ -62,6 +65,8 @@ void LocalisationAdapter::tick_perfect(const RobotSense& sense, api::Blackboard&
   }
   loc.ballPosRR = api::toRobotRelative(loc.robotPos, loc.ballPos.x, loc.ballPos.y);
   loc.teamBallPos = loc.ballPos;
+  loc.ballVel = {};            // no filter: no velocity estimate
+  loc.robotPosCovariance = {}; // the pose is the truth
 }
 
 } // namespace touchline::robot

@@ -7,7 +7,7 @@ namespace touchline::robot {
 
 std::optional<std::string> python_module(const BehaviourDef& behaviour) {
   const std::string& name = behaviour.name;
-  if (name == "py") return std::string("behaviour");
+  if (name == "py" || name == "runswift") return std::string("behaviour");
   if (name.rfind("py:", 0) != 0) return std::nullopt;
   if (name.size() == 3) throw ConfigError("py:MODULE needs a module name");
   return name.substr(3);

@@ -3,6 +3,7 @@ test_launch_faults.py)."""
 import json
 import subprocess
 import sys
+from pathlib import Path
 
 import lcm
 from conftest import LAUNCH, ROOT
@@ -65,11 +66,18 @@ def test_team_specs_carry_skill_parameters():
         "--behaviour", "Team", "--param", "walker=learned", "--param", "policy=p/x.policy"]
     assert team_behaviour("py:Striker,walker=learned") == [
         "--behaviour", "py", "--param", "skill=Striker", "--param", "walker=learned"]
-    for bad in ("Team", "java:Team", "py:", "py:Team,walker", "py:Team,=x", "py:a:b"):
+    assert team_behaviour("runswift:WalkToPoint,headskill=HeadFindBall", Path("/rs/behaviours")) == [
+        "--behaviour", "runswift", "--python-dir", "/rs/behaviours", "--param", "skill=WalkToPoint",
+        "--param", "headskill=HeadFindBall"]
+    for bad in ("Team", "java:Team", "py:", "py:Team,walker", "py:Team,=x", "py:a:b", "runswift:"):
         assert team_behaviour(bad) is None, bad
     result = launch("--team0", "py:Team,walker")
     assert result.returncode == 2
-    assert "--team0 must be py:SKILL or cpp:SKILL, then any ,KEY=VALUE (got 'py:Team,walker')" in result.stderr
+    assert ("--team0 must be py:SKILL, cpp:SKILL or runswift:SKILL, then any ,KEY=VALUE (got 'py:Team,walker')"
+            in result.stderr)
+    result = launch("--team1", "runswift:WalkAround")
+    assert result.returncode == 2
+    assert "--team1 runswift:WalkAround needs --runswift-dir (a rUNSWift behaviours folder)" in result.stderr
 
 
 def test_walk_engines_are_chosen_per_team_and_known_to_the_shim(tmp_path):

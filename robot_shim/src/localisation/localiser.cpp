@@ -10,6 +10,14 @@ void write_localisation(const PoseFilter& pose, const BallFilter& ball, api::Loc
   out.ballPosRR = ball.relative_to(robot);
   out.ballLostCount = ball.lost_count();
   out.teamBallPos = out.ballPos;
+  const FieldPoint v = ball.velocity();
+  out.ballVel = {static_cast<float>(v.x_mm), static_cast<float>(v.y_mm), 0.f};
+  for (size_t i = 0; i < out.robotPosCovariance.size(); ++i)
+    out.robotPosCovariance[i] = static_cast<float>(pose.covariance()[i]);
+  // The position block of the ball's (x, y, vx, vy) covariance.
+  const auto& bc = ball.covariance();
+  out.ballPosCovariance = {static_cast<float>(bc[0]), static_cast<float>(bc[1]), static_cast<float>(bc[4]),
+                           static_cast<float>(bc[5])};
 }
 
 Localiser::Localiser(const LocalisationDef& def, const Pose2D& initial)

@@ -20,6 +20,8 @@ struct MotionBlackboard {
   bool fallen = false;               ///< lying on the ground (it gets up by itself)
   int kickPhase = 0;                 ///< the kick or dribble running: 0 none, 1 prepare, 2 swing, 3 recover
   int64_t ticks = 0;                 ///< motion ticks run
+  float sonarLeft = 1, sonarRight = 1; ///< nearest obstacle, fraction of sonarRange_mm (1: none within it)
+  float sonarRange_mm = 1000;        ///< the sonars' range, mm (the world's [sonar] range_mm)
 };
 
 /// Written by the localisation adapter (every perception frame).
@@ -29,13 +31,29 @@ struct LocalisationBlackboard {
   RRCoord ballPosRR;        ///< ball relative to the robot
   int ballLostCount = 1 << 20; ///< frames since the ball was last seen (huge: never seen)
   AbsCoord teamBallPos;     ///< the team's shared ball estimate
+  AbsCoord ballVel;         ///< ball velocity estimate, field frame, mm/s (theta unused)
+  /// Row-major covariance of robotPos (x mm, y mm, theta rad): mm^2, mm rad, rad^2. Zero
+  /// when the pose is the truth (perfect localisation).
+  std::array<float, 9> robotPosCovariance{};
+  /// Row-major covariance of ballPos (x, y), mm^2.
+  std::array<float, 4> ballPosCovariance{};
 };
 
 /// Written by the vision adapter (every perception frame): what the camera saw.
+/// A goal post or a robot the camera saw this frame.
+struct SeenObject {
+  RRCoord rr;
+  int id = 0;               ///< posts: 0, 1 our goal's left and right seen from the field centre, 2, 3
+                            ///< the opponent goal's; robots: the player number
+  bool teammate = false;    ///< robots: one of ours
+};
+
 struct VisionBlackboard {
   bool ballSeen = false;
   RRCoord ball;
   int64_t frame = 0;        ///< camera frame index
+  std::vector<SeenObject> posts;  ///< goal posts seen this frame
+  std::vector<SeenObject> robots; ///< robots seen this frame
 };
 
 /// The GameController's states (STANDBY: SPL 2023 on, between INITIAL and READY; robots stand).
@@ -59,6 +77,8 @@ struct GameControllerBlackboard {
   bool penalised = false;
   std::array<int, 2> score{{0, 0}};
   int secsRemaining = 0;
+  bool firstHalf = true;
+  int kickOffTeam = 0;      ///< team index (0 or 1) that kicks off
   SetPlay setPlay = SetPlay::NONE; ///< the set play under way
   int setPlayTeam = -1;            ///< the team index taking it (0 or 1; ours is `team`), -1: none
 };

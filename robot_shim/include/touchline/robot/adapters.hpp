@@ -15,10 +15,11 @@ namespace touchline::robot {
 void write_game_controller(const SenseFrame& frame, const RobotSense& sense, api::Blackboard& blackboard);
 
 /// Reads: the camera's observations this frame. Writes: blackboard.vision (the nearest
-/// ball seen, if any).
+/// ball seen, if any; the goal posts, numbered in our own frame, and the robots seen).
 void write_vision(const SenseFrame& frame, const RobotSense& sense, api::Blackboard& blackboard);
 
-/// Reads: whether the robot lies on the ground. Writes: blackboard.motion.fallen.
+/// Reads: whether the robot lies on the ground, the sonars. Writes: blackboard.motion.fallen,
+/// sonarLeft, sonarRight.
 void write_fall(const RobotSense& sense, api::Blackboard& blackboard);
 
 /// Reads: teammates' messages arriving this frame. Writes: blackboard.receiver (the

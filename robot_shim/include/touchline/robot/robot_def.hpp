@@ -46,13 +46,14 @@ struct LocalisationModeDef {
 struct BehaviourDef {
   /// A C++ behaviour of behaviour_cpp's registry ("stand", "goto", "GoToBall", ...), or
   /// "py" / "py:MODULE" for the Python behaviour (MODULE.tick(blackboard); "py" imports
-  /// the module `behaviour`).
+  /// the module `behaviour`), "runswift" for a rUNSWift behaviour folder's behaviour.py
+  /// (the rUNSWift profile of the Python runtime).
   std::string name = "stand";
   std::map<std::string, std::string> params; ///< key -> value, strings as --param key=value gives them
   std::string python_dir;                    ///< Python only: the module's folder (first on sys.path)
 };
 
-/// The module a Python behaviour imports: "py" -> "behaviour", "py:MODULE" -> MODULE;
+/// The module a Python behaviour imports: "py", "runswift" -> "behaviour", "py:MODULE" -> MODULE;
 /// nothing for a C++ behaviour. Throws ConfigError "py:MODULE needs a module name" for "py:".
 std::optional<std::string> python_module(const BehaviourDef& behaviour);
 

@@ -21,7 +21,8 @@ struct LocalisationDef {
 };
 
 /// Writes robotPos, ballPos, ballPosRR (the ball estimate seen from the pose estimate),
-/// ballLostCount and teamBallPos (our own ball until teammates share theirs).
+/// ballLostCount, teamBallPos (our own ball until teammates share theirs), ballVel and the
+/// pose's and the ball's covariances.
 void write_localisation(const PoseFilter& pose, const BallFilter& ball, api::LocalisationBlackboard& out);
 
 class Localiser {

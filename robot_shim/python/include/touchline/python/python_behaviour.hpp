@@ -26,6 +26,10 @@
 // SIGTERM/SIGINT) no Python runs any more: running code is interrupted, and tick()
 // returns error_request() at once.
 //
+// Profiles: what tick() is called with, which `robot` module the code imports and how the
+// result becomes a request are the profile's (python_profile.hpp): Touchline's own by
+// default, rUNSWift's for their framework. Everything above is shared by all profiles.
+//
 // Needs a running interpreter (pybind11::scoped_interpreter: robot_shim holds one for
 // the process) and runs on that interpreter's thread. Several PythonBehaviours may live
 // in one process: each keeps its own modules and robot.params/team/player, swapped into
@@ -46,6 +50,8 @@ class error_already_set;
 }
 
 namespace touchline::python {
+
+class PythonProfile;
 
 /// Chest LED of a robot whose Python behaviour failed, constant until it recovers:
 /// magenta, a colour no behaviour uses (behaviour_py shows red while the ball is lost).
@@ -73,6 +79,8 @@ struct PythonBehaviourDef {
   /// interrupted; 0: never (the default: wall time must not decide what a replay or a test
   /// computes). robot_shim sets it (--tick-timeout-ms) to catch code that hangs.
   int64_t tick_timeout_us = 0;
+  /// The framework the module is written for (python_profile.hpp); null: Touchline's own.
+  std::shared_ptr<PythonProfile> profile;
 };
 
 class PythonBehaviour : public api::Behaviour {
@@ -114,6 +122,8 @@ class PythonBehaviour : public api::Behaviour {
   void leave();
   int64_t now_us() const;
   void check_files();
+  /// Whether the module's file is in the directory.
+  bool module_present() const;
   /// (Re)imports the module. Returns false and reports when it raised or (unless
   /// `starting`, when the constructor throws instead) lacks tick().
   bool load(bool starting);
