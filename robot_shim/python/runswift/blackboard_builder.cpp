@@ -180,7 +180,11 @@ Blackboard BlackboardBuilder::build(const api::Blackboard& t) {
   data.playersPerTeam = def_.players_per_team;
   data.state = static_cast<int>(t.gameController.state);
   data.firstHalf = t.gameController.firstHalf ? 1 : 0;
-  data.kickingTeam = def_.team_numbers[t.gameController.kickOffTeam == 1 ? 1 : 0];
+  // The GameController's kickingTeam is the set play's team while one is on, else the kick-off's.
+  data.setPlay = static_cast<int>(t.gameController.setPlay);
+  const bool set_play = t.gameController.setPlay != api::SetPlay::NONE && t.gameController.setPlayTeam >= 0;
+  const int kicking = set_play ? t.gameController.setPlayTeam : t.gameController.kickOffTeam;
+  data.kickingTeam = def_.team_numbers[kicking == 1 ? 1 : 0];
   data.secsRemaining = t.gameController.secsRemaining;
   const int player = std::clamp(t.gameController.playerNumber, 1, kMaxNumPlayers);
   for (int i = 0; i < 2; ++i) {

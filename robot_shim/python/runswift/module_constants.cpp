@@ -77,7 +77,7 @@ void define_game_controller_constants(py::module_& m) {
       {"TEAM_BLUE", 0}, {"TEAM_RED", 1}, {"TEAM_YELLOW", 2}, {"TEAM_BLACK", 3}, {"TEAM_WHITE", 4},
       {"TEAM_GREEN", 5}, {"TEAM_ORANGE", 6}, {"TEAM_PURPLE", 7}, {"TEAM_BROWN", 8}, {"TEAM_GRAY", 9},
       {"STATE_INITIAL", 0}, {"STATE_READY", 1}, {"STATE_SET", 2}, {"STATE_PLAYING", 3}, {"STATE_FINISHED", 4},
-      {"STATE_STANDBY", 5}, // the GameController's since 2023; Touchline's referee does not send it yet
+      {"STATE_STANDBY", 5}, // the GameController's since 2023; Touchline's referee with rules.standby_s
       {"GAME_PHASE_NORMAL", 0}, {"GAME_PHASE_PENALTYSHOOT", 1}, {"GAME_PHASE_OVERTIME", 2}, {"GAME_PHASE_TIMEOUT", 3},
       {"SET_PLAY_NONE", 0}, {"SET_PLAY_GOAL_KICK", 1}, {"SET_PLAY_PUSHING_FREE_KICK", 2},
       {"SET_PLAY_CORNER_KICK", 3}, {"SET_PLAY_KICK_IN", 4}, {"SET_PLAY_PENALTY_KICK", 5},

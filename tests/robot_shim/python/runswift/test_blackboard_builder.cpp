@@ -148,6 +148,7 @@ TEST(BlackboardBuilder, GameControllerDataInTheirNumbers) {
   EXPECT_EQ(gc.data.teams[1].score, 1);
   EXPECT_EQ(gc.our_team.teamNumber, 18);
   EXPECT_EQ(gc.player_number, 3);
+
   EXPECT_EQ(gc.our_team.players[2].penalty, 0); // PENALTY_NONE
   t.gameController.penalised = true;
   t.gameController.state = api::GameState::READY;
@@ -156,6 +157,15 @@ TEST(BlackboardBuilder, GameControllerDataInTheirNumbers) {
   EXPECT_EQ(bb.gameController.data.state, 1);
   t.gameController.team = 1;
   EXPECT_EQ(builder.build(t).gameController.our_team.teamNumber, 5);
+
+  // A set play: their numbers, and the kicking team is the set play's, not the kick-off's.
+  t.gameController.setPlay = api::SetPlay::CORNER_KICK;
+  t.gameController.setPlayTeam = 0;
+  const Blackboard corner = builder.build(t);
+  EXPECT_EQ(corner.gameController.data.setPlay, 3); // SET_PLAY_CORNER_KICK
+  EXPECT_EQ(corner.gameController.data.kickingTeam, 18);
+  t.gameController.state = api::GameState::STANDBY;
+  EXPECT_EQ(builder.build(t).gameController.data.state, 5); // STATE_STANDBY
 }
 
 TEST(BlackboardBuilder, TheBehaviourSeesItsSkillNamesAndItsLastSharedData) {
