@@ -218,7 +218,7 @@ int main(int argc, char** argv) {
     }
     if (def.behaviour.name == "runswift") {
       python::runswift::RunswiftDef runswift;
-      runswift.field = python::runswift::load_spl_field(files.field);
+      runswift.field = def.localisation.filters.field; // the field the robot knows (--field-config)
       python::runswift::apply_params(def.behaviour.params, runswift);
       runswift.name = python.name;
       python.profile = python::runswift::make_profile(std::move(runswift));

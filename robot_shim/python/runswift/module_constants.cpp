@@ -104,7 +104,7 @@ void define_game_controller_constants(py::module_& m) {
 
 } // namespace
 
-void set_field_constants(py::module_& m, const SplFieldDef& f) {
+void set_field_constants(py::module_& m, const robot::localisation::FieldMap& f) {
   // Integers, as their C preprocessor constants are (Python code divides them with /).
   auto mm = [](float v) { return static_cast<int>(std::lround(v)); };
   // No separate penalty area (the 2011 field): its role is the goal box's.
@@ -150,7 +150,7 @@ void define_runswift_module(py::module_& m) {
   define_geometry(m);
   define_actions(m);
   define_blackboard(m);
-  set_field_constants(m, SplFieldDef{});
+  set_field_constants(m, robot::localisation::FieldMap{});
   m.attr("params") = py::dict();
   m.attr("team") = 0;
   m.attr("player") = 1;

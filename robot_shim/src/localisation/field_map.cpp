@@ -62,7 +62,16 @@ FieldMap load_field_map(const std::string& path) {
   schema.bind("field.length_mm", &map.length_mm, "between the goal lines, mm")
       .bind("field.width_mm", &map.width_mm, "between the touchlines, mm")
       .bind("field.goal_width_mm", &map.goal_width_mm, "between the posts' centres, mm")
-      .bind("field.penalty_mark_distance_mm", &map.penalty_mark_distance_mm, "from the goal line, mm");
+      .bind("field.penalty_mark_distance_mm", &map.penalty_mark_distance_mm, "from the goal line, mm")
+      .bind("field.border_mm", &map.border_mm, "carpet beyond the lines, mm")
+      .bind("field.line_width_mm", &map.line_width_mm, "line width, mm")
+      .bind("field.goal_post_diameter_mm", &map.goal_post_diameter_mm, "post diameter, mm")
+      .bind("field.goal_box_length_mm", &map.goal_box_length_mm, "goal box depth, mm")
+      .bind("field.goal_box_width_mm", &map.goal_box_width_mm, "goal box width, mm")
+      .bind("field.penalty_area_length_mm", &map.penalty_area_length_mm, "penalty area depth, mm")
+      .bind("field.penalty_area_width_mm", &map.penalty_area_width_mm, "penalty area width, mm")
+      .bind("field.centre_circle_diameter_mm", &map.centre_circle_diameter_mm, "centre circle diameter, mm")
+      .bind("physics.ball_diameter_mm", &map.ball_diameter_mm, "ball diameter, mm");
   schema.read_file(path, /*ignore_unknown=*/true);
   try {
     // The world accepts no field longer or wider (sim/src/config.cpp); squares of these
@@ -71,6 +80,15 @@ FieldMap load_field_map(const std::string& path) {
     require_positive("field.width_mm", map.width_mm, kMaxFieldSide_mm);
     require_positive("field.goal_width_mm", map.goal_width_mm, map.width_mm);
     require_positive("field.penalty_mark_distance_mm", map.penalty_mark_distance_mm, map.length_mm / 2);
+    require_non_negative("field.border_mm", map.border_mm, kMaxFieldSide_mm);
+    require_non_negative("field.line_width_mm", map.line_width_mm, map.width_mm);
+    require_positive("field.goal_post_diameter_mm", map.goal_post_diameter_mm, map.goal_width_mm);
+    require_non_negative("field.goal_box_length_mm", map.goal_box_length_mm, map.length_mm / 2);
+    require_non_negative("field.goal_box_width_mm", map.goal_box_width_mm, map.width_mm);
+    require_non_negative("field.penalty_area_length_mm", map.penalty_area_length_mm, map.length_mm / 2);
+    require_non_negative("field.penalty_area_width_mm", map.penalty_area_width_mm, map.width_mm);
+    require_non_negative("field.centre_circle_diameter_mm", map.centre_circle_diameter_mm, map.width_mm);
+    require_positive("physics.ball_diameter_mm", map.ball_diameter_mm, 1000.f);
   } catch (const ConfigError& e) {
     throw ConfigError(path + ": " + e.what());
   }

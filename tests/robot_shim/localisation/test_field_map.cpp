@@ -77,8 +77,18 @@ TEST(LoadFieldMap, ReadsTheFieldSectionOfTheWorldsConfigAndSkipsTheRest) {
   const auto map = touchline::robot::localisation::load_field_map(TOUCHLINE_SOURCE_DIR "/config/spl2020.ini");
   EXPECT_EQ(map.length_mm, 9000.f);
   EXPECT_EQ(map.width_mm, 6000.f);
+  EXPECT_EQ(map.goal_width_mm, 1500.f);
+  EXPECT_EQ(map.goal_box_length_mm, 600.f);
+  EXPECT_EQ(map.goal_box_width_mm, 2200.f);
+  EXPECT_EQ(map.penalty_area_length_mm, 1650.f);
+  EXPECT_EQ(map.penalty_area_width_mm, 4000.f);
+  EXPECT_EQ(map.penalty_mark_distance_mm, 1300.f);
+  EXPECT_EQ(map.centre_circle_diameter_mm, 1500.f);
+  EXPECT_EQ(map.ball_diameter_mm, 100.f); // [physics], the one key of it the robot knows
   const auto classic = touchline::robot::localisation::load_field_map(TOUCHLINE_SOURCE_DIR "/config/spl2011.ini");
   EXPECT_EQ(classic.length_mm, 6000.f);
+  EXPECT_EQ(classic.penalty_area_length_mm, 0.f); // 2011: none
+  EXPECT_EQ(classic.ball_diameter_mm, touchline::robot::localisation::FieldMap{}.ball_diameter_mm);
   EXPECT_THROW(touchline::robot::localisation::load_field_map("/nonexistent.ini"), touchline::ConfigError);
 }
 
@@ -105,6 +115,9 @@ TEST(LoadFieldMap, InfiniteNanHugeAndNegativeSizesAreErrorsNamingTheKey) {
             path + ": field.goal_width_mm must be in (0, 4000] (got 5000)");
   EXPECT_EQ(field_map_error("[field]\npenalty_mark_distance_mm = 4000\n"),
             path + ": field.penalty_mark_distance_mm must be in (0, 3000] (got 4000)");
+  EXPECT_EQ(field_map_error("[field]\nlength_mm = 9000\ngoal_box_length_mm = 6000\n"),
+            path + ": field.goal_box_length_mm must be in [0, 4500] (got 6000)");
+  EXPECT_EQ(field_map_error("[physics]\nball_diameter_mm = 0\n"), path + ": physics.ball_diameter_mm must be in (0, 1000] (got 0)");
   EXPECT_EQ(field_map_error("[physics]\nball_mass_kg = inf\n"), ""); // not the robot's business: the world checks it
 }
 

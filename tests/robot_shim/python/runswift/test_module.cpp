@@ -149,7 +149,7 @@ TEST(RobotModule, CovariancesAreTuplesOfColumns) {
 
 TEST(RobotModule, FieldConstantsComeFromTheWorldsField) {
   py::module_ m = py::module_::import(kModuleName);
-  SplFieldDef f;
+  touchline::robot::localisation::FieldMap f;
   f.length_mm = 9000;
   f.width_mm = 6000;
   f.goal_width_mm = 1500;

@@ -9,7 +9,7 @@
 
 #include <pybind11/pybind11.h>
 
-#include "touchline/python/runswift/field.hpp"
+#include "touchline/robot/localisation/field_map.hpp"
 
 namespace touchline::python::runswift {
 
@@ -19,7 +19,7 @@ constexpr const char* kModuleName = "touchline_runswift_robot";
 void define_runswift_module(pybind11::module_& m);
 
 /// Sets FIELD_LENGTH, GOAL_BOX_WIDTH, BALL_RADIUS, ... on `m` from `field` (mm).
-void set_field_constants(pybind11::module_& m, const SplFieldDef& field);
+void set_field_constants(pybind11::module_& m, const robot::localisation::FieldMap& field);
 
 /// A Python enum.IntEnum `name` on `m` with `members` (name, value).
 pybind11::object int_enum(pybind11::module_& m, const char* name, const std::vector<std::pair<const char*, int>>& members);

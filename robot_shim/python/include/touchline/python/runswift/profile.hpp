@@ -19,13 +19,13 @@
 
 #include "touchline/python/python_profile.hpp"
 #include "touchline/python/runswift/blackboard_builder.hpp"
-#include "touchline/python/runswift/field.hpp"
+#include "touchline/robot/localisation/field_map.hpp"
 #include "touchline/python/runswift/request_converter.hpp"
 
 namespace touchline::python::runswift {
 
 struct RunswiftDef {
-  SplFieldDef field;                     ///< FIELD_LENGTH, ... (the world's config)
+  robot::localisation::FieldMap field;   ///< FIELD_LENGTH, ...: the field the robot knows (--field-config)
   BlackboardBuilderDef blackboard;       ///< skill names, team numbers, ...
   RunswiftWalkLimits walk;               ///< their walk's limits
   int64_t broadcast_period_us = 1000000; ///< one message a second (their 1 Hz budget); 0: never
