@@ -65,7 +65,7 @@ body_request_t body(const AC::Body& b) {
 AC::Body body(const body_request_t& m, const Checker& check) {
   AC::Body b;
   b.actionType = static_cast<AC::ActionType>(
-      check.range(m.action_type, 0, static_cast<int>(AC::ActionType::DEAD), "body action_type"));
+      check.range(m.action_type, 0, static_cast<int>(AC::ActionType::GOALIE_DIVE_RIGHT), "body action_type"));
   b.forward = check.finite(m.forward_mm_s, "body forward_mm_s");
   b.left = check.finite(m.left_mm_s, "body left_mm_s");
   b.turn = check.finite(m.turn_rad_s, "body turn_rad_s");

@@ -62,7 +62,9 @@ void define_action_command(py::module_& m) {
       .value("KICK", AC::ActionType::KICK)
       .value("GETUP_FRONT", AC::ActionType::GETUP_FRONT)
       .value("GETUP_BACK", AC::ActionType::GETUP_BACK)
-      .value("DEAD", AC::ActionType::DEAD);
+      .value("DEAD", AC::ActionType::DEAD)
+      .value("GOALIE_DIVE_LEFT", AC::ActionType::GOALIE_DIVE_LEFT)
+      .value("GOALIE_DIVE_RIGHT", AC::ActionType::GOALIE_DIVE_RIGHT);
   py::enum_<AC::Foot>(m, "Foot").value("LEFT", AC::Foot::LEFT).value("RIGHT", AC::Foot::RIGHT);
 
   py::class_<AC::Head>(m, "Head", "head request: yaw, pitch (rad), isRelative, yawSpeed, pitchSpeed (0..1]")

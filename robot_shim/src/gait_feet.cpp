@@ -17,10 +17,21 @@ WalkRequest walk_request(const api::ActionCommand::Body& body) {
   return {body.forward * speed, body.left * speed, body.turn * speed};
 }
 
-GaitFeet::GaitFeet(const WalkDef& walk, const KickDef& kick) : walk_(walk), kick_(kick), feet_(walk_.feet()) {}
+GaitFeet::GaitFeet(const WalkDef& walk, const KickDef& kick, const DiveDef& dive)
+    : walk_(walk), kick_(kick), dive_(dive), feet_(walk_.feet()) {}
 
 void GaitFeet::tick(const api::ActionCommand::Body& request, float dt_s) {
-  if (!kick_.running() && is_kick(request.actionType)) kick_.start(request);
+  if (!kick_.running() && !dive_.running()) {
+    if (is_kick(request.actionType)) kick_.start(request);
+    else if (is_dive(request.actionType)) dive_.start(request);
+  }
+  if (dive_.running()) {
+    feet_ = dive_.tick(walk_);
+    status_.active = dive_.request();
+    status_.kick_phase = static_cast<int>(KickPhase::kNone);
+    status_.standing = false; // down, or falling: not standing until the dive is over
+    return;
+  }
   if (kick_.running()) {
     feet_ = kick_.tick(walk_);
     status_.active = kick_.request();

@@ -88,7 +88,9 @@ void NaoJointWalk::joints_for_plan(nao::JointAngles& joints) const {
 void NaoJointWalk::start(WalkEngineOutput& out) { joints_for_plan(out.joints); }
 
 void NaoJointWalk::tick(const api::ActionCommand::Body& request, const nao::Sensors&, WalkEngineOutput& out) {
-  gait_.tick(request, static_cast<float>(def_.period_us) * 1e-6f);
+  // A dive's feet half a metre apart sideways have no leg pose: this engine stands instead.
+  const api::ActionCommand::Body body = is_dive(request.actionType) ? api::ActionCommand::stand() : request;
+  gait_.tick(body, static_cast<float>(def_.period_us) * 1e-6f);
   joints_for_plan(out.joints);
 }
 

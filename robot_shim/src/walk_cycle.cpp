@@ -108,6 +108,12 @@ void WalkCycle::reset() {
   lift_off_ = landing_ = feet_.left;
 }
 
+void WalkCycle::stand_at(const Pose2D& body) {
+  planned_ = body;
+  stand();
+  lift_off_ = landing_ = feet_.left;
+}
+
 Pose2D WalkCycle::odometry() const { return body_of(feet_); }
 
 FeetPose WalkCycle::feet_at_rest(const Pose2D& body) const {

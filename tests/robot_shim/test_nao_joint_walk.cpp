@@ -150,3 +150,24 @@ TEST(NaoJointWalk, ItKicksAsTheWalkCycleDoesWhicheverFootBoreTheWeight) {
     EXPECT_EQ(warnings.str(), "");
   }
 }
+
+TEST(NaoJointWalk, ADiveRequestStandsForFeetTheLegsCannotReach) {
+  // Feet half a metre apart sideways have no leg pose: this engine stands through a dive
+  // request (no warning, the engine keeps running) and walks on afterwards.
+  WalkEngineDef joints_def;
+  joints_def.name = "nao-joints";
+  std::ostringstream warnings;
+  MotionDef def;
+  def.warnings = &warnings;
+  MotionAdapter motion(make_walk_engine(joints_def, WalkDef{}, KickDef{}), def);
+  api::Blackboard blackboard;
+  blackboard.behaviour.request.body.actionType = api::ActionCommand::ActionType::GOALIE_DIVE_LEFT;
+  for (int i = 0; i < 100; ++i) motion.tick(blackboard);
+  EXPECT_FALSE(motion.engine_stopped());
+  EXPECT_TRUE(blackboard.motion.standing);
+  EXPECT_NEAR(blackboard.motion.odometry.y, 0.f, 1.f);
+  blackboard.behaviour.request.body = api::ActionCommand::walk(200, 0, 0);
+  for (int i = 0; i < 100; ++i) motion.tick(blackboard);
+  EXPECT_GT(blackboard.motion.odometry.x, 50.f);
+  EXPECT_EQ(warnings.str(), "");
+}

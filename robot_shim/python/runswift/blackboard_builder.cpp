@@ -100,6 +100,8 @@ BodyCommand active_body(const api::ActionCommand::Body& b) {
     case ActionType::GETUP_FRONT: body.actionType = GETUP_FRONT; break;
     case ActionType::GETUP_BACK: body.actionType = GETUP_BACK; break;
     case ActionType::DEAD: body.actionType = LIMP; break;
+    case ActionType::GOALIE_DIVE_LEFT: body.actionType = GOALIE_DIVE_LEFT; break;
+    case ActionType::GOALIE_DIVE_RIGHT: body.actionType = GOALIE_DIVE_RIGHT; break;
   }
   const bool kick = b.actionType == ActionType::KICK || b.actionType == ActionType::DRIBBLE;
   body.forward = static_cast<int>(std::lround(b.forward));

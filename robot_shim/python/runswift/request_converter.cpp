@@ -38,6 +38,13 @@ api::ActionCommand::Body convert_body(const BodyCommand& b, const RunswiftWalkLi
       body.foot = b.foot == FOOT_RIGHT ? AC::Foot::RIGHT : AC::Foot::LEFT;
       return body;
     }
+    case GOALIE_DIVE_LEFT:
+    case GOALIE_DIVE_RIGHT: {
+      // Our dive (robot DiveDef: their 2.4 s, a body length sideways); it latches in motion.
+      AC::Body body;
+      body.actionType = b.actionType == GOALIE_DIVE_LEFT ? AC::ActionType::GOALIE_DIVE_LEFT : AC::ActionType::GOALIE_DIVE_RIGHT;
+      return body;
+    }
     default:
       return AC::stand();
   }
@@ -56,7 +63,8 @@ api::ActionCommand::Head convert_head(const HeadCommand& h) {
 int32_t led_colour(const Rgb& rgb) { return (rgb.red ? 0xff0000 : 0) | (rgb.green ? 0x00ff00 : 0) | (rgb.blue ? 0x0000ff : 0); }
 
 bool is_simulated(int type) {
-  return type == NONE || type == STAND || type == WALK || type == KICK || type == TURN_DRIBBLE;
+  return type == NONE || type == STAND || type == WALK || type == KICK || type == TURN_DRIBBLE ||
+         type == GOALIE_DIVE_LEFT || type == GOALIE_DIVE_RIGHT;
 }
 
 double action_duration_s(int type) {
@@ -67,8 +75,6 @@ double action_duration_s(int type) {
     case INITIAL: return 2.0;
     case GOALIE_SIT: return 0.7;
     case GOALIE_FAST_SIT: return 0.35;
-    case GOALIE_DIVE_LEFT:
-    case GOALIE_DIVE_RIGHT: return 2.4;
     case GOALIE_CENTRE: return 2.1;
     case GOALIE_UNCENTRE: return 4.6;
     case GOALIE_INITIAL: return 1.2;

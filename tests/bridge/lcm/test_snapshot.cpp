@@ -102,7 +102,7 @@ TEST(Snapshot, FieldsOutOfRangeAreMalformed) {
   };
   rejected("team 2", [](blackboard_snapshot_t& m) { m.team = 2; });
   rejected("negative frame", [](blackboard_snapshot_t& m) { m.frame = -1; });
-  rejected("unknown action type", [](blackboard_snapshot_t& m) { m.request_body.action_type = 8; });
+  rejected("unknown action type", [](blackboard_snapshot_t& m) { m.request_body.action_type = 10; });
   rejected("a third foot", [](blackboard_snapshot_t& m) { m.active.foot = 2; });
   rejected("unknown game state", [](blackboard_snapshot_t& m) { m.game_state = 6; });
   rejected("player number 0", [](blackboard_snapshot_t& m) { m.player_number = 0; });

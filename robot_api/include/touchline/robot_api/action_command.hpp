@@ -15,6 +15,8 @@ enum class ActionType : int8_t {
   GETUP_FRONT = 5,
   GETUP_BACK = 6,
   DEAD = 7, ///< limp: the robot does nothing (crashed or error)
+  GOALIE_DIVE_LEFT = 8,  ///< fall to the left, lie still, stand up where it landed (robot DiveDef)
+  GOALIE_DIVE_RIGHT = 9, ///< the same to the right
 };
 
 inline const char* name(ActionType type) {
@@ -27,6 +29,8 @@ inline const char* name(ActionType type) {
     case ActionType::GETUP_FRONT: return "GETUP_FRONT";
     case ActionType::GETUP_BACK: return "GETUP_BACK";
     case ActionType::DEAD: return "DEAD";
+    case ActionType::GOALIE_DIVE_LEFT: return "GOALIE_DIVE_LEFT";
+    case ActionType::GOALIE_DIVE_RIGHT: return "GOALIE_DIVE_RIGHT";
   }
   return "?";
 }

@@ -93,6 +93,12 @@ class WalkCycle {
   bool left_swinging() const { return left_swing_; }
   const WalkDef& def() const { return def_; }
 
+  /// Standing, feet side by side around `body` (odometry frame): where a motion that is
+  /// not a step (a dive) left the robot; the walk goes on from there.
+  void stand_at(const Pose2D& body);
+  /// Feet at rest around `body`: side by side, square, foot_separation_mm apart.
+  FeetPose feet_at_rest(const Pose2D& body) const;
+
  private:
   WalkDef def_;
   FeetPose feet_;
@@ -114,8 +120,6 @@ class WalkCycle {
   void begin_step(const WalkRequest& target, float dt_s);
   /// Moves the swing foot to where it is `step_time_s_` into the step.
   void move_swing_foot();
-  /// Feet at rest around `body`: side by side, square, foot_separation_mm apart.
-  FeetPose feet_at_rest(const Pose2D& body) const;
   bool feet_at_rest_around_plan() const;
   void stand();
 };

@@ -243,7 +243,7 @@ TEST_F(RunswiftRobot, AFieldOfTheWrongTypeIsATypeErrorWhereItIsAssigned) {
 }
 
 TEST_F(RunswiftRobot, AnUnsimulatedActionStandsWithOneWarningAndNoErrorLed) {
-  install("dives.py");
+  install("sits.py");
   start();
   for (int i = 0; i < 200; ++i) {
     const RobotAct act = step();
@@ -251,8 +251,22 @@ TEST_F(RunswiftRobot, AnUnsimulatedActionStandsWithOneWarningAndNoErrorLed) {
     EXPECT_NE(act.leds, kErrorChestLed);
   }
   EXPECT_TRUE(behaviour_->healthy());
-  EXPECT_EQ(log_.str(), "robot 0/2: action GOALIE_DIVE_LEFT is not simulated: the robot stands for 2.4 s "
+  EXPECT_EQ(log_.str(), "robot 0/2: action SIT is not simulated: the robot stands for 3.05 s "
                         "(its duration on the robot)\n");
+}
+
+TEST_F(RunswiftRobot, TheirGoalieDiveIsOurDiveWithNoWarning) {
+  install("dives.py"); // GOALIE_DIVE_LEFT every frame
+  start();
+  for (int i = 0; i < 45; ++i) step(); // 1.5 s: down on the left, not yet up (2.4 s)
+  const api::MotionBlackboard& motion = robot_->blackboard().motion;
+  EXPECT_EQ(robot_->blackboard().behaviour.request.body.actionType, ActionCommand::ActionType::GOALIE_DIVE_LEFT);
+  EXPECT_EQ(motion.active.actionType, ActionCommand::ActionType::GOALIE_DIVE_LEFT);
+  EXPECT_FALSE(motion.standing);
+  EXPECT_NEAR(motion.odometry.y, robot::DiveDef{}.reach_mm, 1.f); // facing +x: left is +y
+  EXPECT_NEAR(motion.odometry.x, 0.f, 1.f);
+  EXPECT_TRUE(behaviour_->healthy());
+  EXPECT_EQ(log_.str(), "");
 }
 
 TEST_F(RunswiftRobot, OurTestBehaviourWalksToABallItSees) {

@@ -136,24 +136,40 @@ TEST(RequestConverter, TheChestButtonsColourIsTheChestLed) {
 TEST(RequestConverter, AnUnsimulatedActionStandsForItsDurationWithOneWarningPerType) {
   std::vector<std::string> warnings;
   RequestConverter c([&](const std::string& line) { warnings.push_back(line); });
-  BodyCommand dive;
-  dive.actionType = GOALIE_DIVE_LEFT;
+  BodyCommand sit;
+  sit.actionType = SIT;
   const int64_t start = 1000000;
-  EXPECT_EQ(c.convert(with_body(dive), start).body.actionType, AC::ActionType::STAND);
+  EXPECT_EQ(c.convert(with_body(sit), start).body.actionType, AC::ActionType::STAND);
   ASSERT_EQ(warnings.size(), 1u);
-  EXPECT_EQ(warnings[0], "action GOALIE_DIVE_LEFT is not simulated: the robot stands for 2.4 s (its duration on the robot)");
-  // Whatever is asked meanwhile, the dive runs to its end (2.4 s on the robot).
-  EXPECT_EQ(c.convert(with_body(walk(200, 0, 0)), start + 2399000).body.actionType, AC::ActionType::STAND);
-  EXPECT_EQ(c.busy_with(), GOALIE_DIVE_LEFT);
-  EXPECT_EQ(c.convert(with_body(walk(200, 0, 0)), start + 2400000).body.actionType, AC::ActionType::WALK);
+  EXPECT_EQ(warnings[0], "action SIT is not simulated: the robot stands for 3.05 s (its duration on the robot)");
+  // Whatever is asked meanwhile, the action runs to its end (3.05 s on the robot).
+  EXPECT_EQ(c.convert(with_body(walk(200, 0, 0)), start + 3049000).body.actionType, AC::ActionType::STAND);
+  EXPECT_EQ(c.busy_with(), SIT);
+  EXPECT_EQ(c.convert(with_body(walk(200, 0, 0)), start + 3050000).body.actionType, AC::ActionType::WALK);
   EXPECT_EQ(c.busy_with(), -1);
   // The same action again: no second warning; another one: its own.
-  c.convert(with_body(dive), start + 3000000);
+  c.convert(with_body(sit), start + 4000000);
   BodyCommand signal;
   signal.actionType = SIGNAL_GOAL_LEFT;
-  c.convert(with_body(signal), start + 6000000);
+  c.convert(with_body(signal), start + 8000000);
   ASSERT_EQ(warnings.size(), 2u);
   EXPECT_NE(warnings[1].find("SIGNAL_GOAL_LEFT"), std::string::npos);
+}
+
+TEST(RequestConverter, AGoalieDiveBecomesOurDiveToTheSameSideWithNoWarning) {
+  std::vector<std::string> warnings;
+  RequestConverter c([&](const std::string& line) { warnings.push_back(line); });
+  BodyCommand dive;
+  dive.actionType = GOALIE_DIVE_RIGHT;
+  EXPECT_EQ(c.convert(with_body(dive), 1000000).body.actionType, AC::ActionType::GOALIE_DIVE_RIGHT);
+  EXPECT_EQ(c.busy_with(), -1); // the dive latches in motion (DiveGenerator), not here
+  dive.actionType = GOALIE_DIVE_LEFT;
+  EXPECT_EQ(c.convert(with_body(dive), 1010000).body.actionType, AC::ActionType::GOALIE_DIVE_LEFT);
+  // The next frame's walk goes through: motion ignores it while the robot is down.
+  EXPECT_EQ(c.convert(with_body(walk(200, 0, 0)), 1020000).body.actionType, AC::ActionType::WALK);
+  EXPECT_TRUE(warnings.empty());
+  EXPECT_TRUE(is_simulated(GOALIE_DIVE_LEFT));
+  EXPECT_TRUE(is_simulated(GOALIE_DIVE_RIGHT));
 }
 
 TEST(RequestConverter, TimeGoingBackwardsEndsAnActionInProgress) {

@@ -36,15 +36,16 @@ struct RunswiftWalkLimits {
 /// forward, left, turn limited to the ellipsoid of `limits` at `speed` (clamped to [0, 1]).
 api::ActionCommand::Body convert_walk(float forward_mm_s, float left_mm_s, float turn_rad_s, float speed,
                                       const RunswiftWalkLimits& limits = {});
-/// The Body for WALK, KICK, TURN_DRIBBLE, STAND and NONE (stand for anything else).
+/// The Body for WALK, KICK, TURN_DRIBBLE, GOALIE_DIVE_LEFT/RIGHT, STAND and NONE (stand
+/// for anything else).
 api::ActionCommand::Body convert_body(const BodyCommand& body, const RunswiftWalkLimits& limits = {});
 api::ActionCommand::Head convert_head(const HeadCommand& head);
 /// 0xRRGGBB of an rgb.
 int32_t led_colour(const Rgb& rgb);
-/// Whether Touchline executes `type` (WALK, KICK, TURN_DRIBBLE, STAND, NONE).
+/// Whether Touchline executes `type` (WALK, KICK, TURN_DRIBBLE, the goalie dives, STAND, NONE).
 bool is_simulated(int type);
-/// How long `type` takes on the robot, seconds (their key-frame files' totals; 1 s where
-/// they have none).
+/// How long an unsimulated `type` takes on the robot, seconds (their key-frame files'
+/// totals; 1 s where they have none). The dives' 2.4 s is the robot's DiveDef.
 double action_duration_s(int type);
 
 /// Checks every number of `request` a robot would act on. Throws RequestError
