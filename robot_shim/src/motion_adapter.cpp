@@ -91,8 +91,9 @@ bool MotionAdapter::accept(const WalkEngineOutput& out, Sample& sample) {
   }
   if (fault.empty()) {
     if (engine_->output_kind() == EngineOutputKind::kJoints) {
-      // Position-controlled motors: the joints are where they were told, within their stops.
-      sensors_.joints = nao::clamp_to_ranges(out.joints);
+      // Position-controlled motors: the joints go where they were told, within their stops
+      // and as fast as their motors turn.
+      sensors_.joints = nao::follow(sensors_.joints, out.joints, static_cast<float>(period_us_) * 1e-6f);
       sample.feet = joint_feet_.update(sensors_.joints);
       sample.odometry = body_of(sample.feet);
     } else {

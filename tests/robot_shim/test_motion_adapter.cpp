@@ -200,6 +200,23 @@ TEST(MotionAdapterSeam, AJointEngineIsGivenItsLastCommandAndThePressureOfTheStan
   EXPECT_EQ(warnings.str(), "");
 }
 
+TEST(MotionAdapterSeam, AJointMovesNoFasterThanItsMotorWhateverTheEngineAsks) {
+  std::ostringstream warnings;
+  auto script = [](int64_t tick) {
+    robot::nao::JointAngles j = crouch();
+    if (tick >= 10) j[robot::nao::kLKneePitch] += 1.f; // a whole radian at once
+    return j;
+  };
+  robot::MotionAdapter motion(std::make_unique<ScriptedJointEngine>(script), quiet(warnings));
+  Blackboard blackboard;
+  for (int i = 0; i < 10; ++i) motion.tick(blackboard); // the engine's 10th tick asks for the jump
+  const float step = robot::nao::joint_max_speed_rad_s(robot::nao::kLKneePitch) * 0.01f;
+  EXPECT_NEAR(motion.sensors().joints[robot::nao::kLKneePitch], crouch()[robot::nao::kLKneePitch] + step, 1e-5f);
+  for (int i = 0; i < 50; ++i) motion.tick(blackboard); // half a second: it has arrived
+  EXPECT_NEAR(motion.sensors().joints[robot::nao::kLKneePitch], crouch()[robot::nao::kLKneePitch] + 1.f, 1e-5f);
+  EXPECT_EQ(warnings.str(), "");
+}
+
 TEST(MotionAdapterSeam, FeetNeverPartFurtherThanANaosLegsReach) {
   // Whatever joints an engine commands within their ranges, the feet stay within two legs'
   // length plus the hips' spacing of each other.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "touchline/angles.hpp"
 
@@ -72,6 +73,35 @@ std::optional<std::string> check_joints(const JointAngles& joints, float toleran
     return std::string(line);
   }
   return std::nullopt;
+}
+
+float joint_max_speed_rad_s(int joint) {
+  constexpr float kNoLoad_rad_s = 8000.f * 2.f * kPi / 60.f; // the leg motor, unloaded
+  switch (joint) {
+    case kLHipYawPitch:
+    case kLHipRoll:
+    case kLAnkleRoll:
+    case kRHipRoll:
+    case kRAnkleRoll: return kNoLoad_rad_s / 201.3f;
+    case kLHipPitch:
+    case kLKneePitch:
+    case kLAnklePitch:
+    case kRHipPitch:
+    case kRKneePitch:
+    case kRAnklePitch: return kNoLoad_rad_s / 130.85f;
+    default: return std::numeric_limits<float>::infinity();
+  }
+}
+
+JointAngles follow(const JointAngles& from, const JointAngles& target, float dt_s) {
+  JointAngles at = clamp_to_ranges(target);
+  for (int j = 0; j < kJointCount; ++j) {
+    const float step = joint_max_speed_rad_s(j) * dt_s;
+    const float start = from[static_cast<size_t>(j)];
+    float& value = at[static_cast<size_t>(j)];
+    value = std::clamp(value, start - step, start + step);
+  }
+  return at;
 }
 
 JointAngles clamp_to_ranges(const JointAngles& joints) {

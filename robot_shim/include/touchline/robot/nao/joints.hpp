@@ -44,4 +44,16 @@ std::optional<std::string> check_joints(const JointAngles& joints, float toleran
 /// Where position-controlled motors end up when told `joints`: each within its range.
 JointAngles clamp_to_ranges(const JointAngles& joints);
 
+/// The fastest a leg joint turns, rad/s: its motor's no-load speed through its gear
+/// (Aldebaran's NAO motor documentation: the leg motor runs at 8000 rpm unloaded, geared
+/// 201.3:1 for HipYawPitch and the rolls, 130.85:1 for the pitches: 4.16 and 6.40 rad/s).
+/// Infinity for the other joints: they move no foot.
+float joint_max_speed_rad_s(int joint);
+
+/// Where the motors are `dt_s` after being at `from` and told `target`: each leg joint moves
+/// towards its target by at most joint_max_speed_rad_s * dt_s, the rest reach theirs; all
+/// within their ranges. (A walk's request can move faster than its motors, as rUNSWift's kick
+/// asks the ankle for about 49 rad/s; on the robot the motor lags, and so here.)
+JointAngles follow(const JointAngles& from, const JointAngles& target, float dt_s);
+
 } // namespace touchline::robot::nao
