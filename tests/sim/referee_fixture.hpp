@@ -20,6 +20,20 @@ constexpr double kKickOffS = 51.0; ///< default rules: the first half's PLAYING 
 
 inline int64_t at_s(double seconds) { return static_cast<int64_t>(std::llround(seconds * 1e6)); }
 
+/// The modern SPL field (config/spl2020.ini's [field]): 9000 x 6000, goal 1500 wide,
+/// penalty area 1650 x 4000, penalty marks 1300 in, centre circle 1500.
+inline FieldDef spl2020_field() {
+  FieldDef f;
+  f.length_mm = 9000;
+  f.width_mm = 6000;
+  f.goal_width_mm = 1500;
+  f.penalty_area_length_mm = 1650;
+  f.penalty_area_width_mm = 4000;
+  f.penalty_mark_distance_mm = 1300;
+  f.centre_circle_diameter_mm = 1500;
+  return f;
+}
+
 class RefereeTest : public ::testing::Test {
  protected:
   Field field{FieldDef{}};

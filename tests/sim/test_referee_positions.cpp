@@ -11,18 +11,6 @@
 namespace touchline::sim {
 namespace {
 
-FieldDef spl2020_field() {
-  FieldDef f;
-  f.length_mm = 9000;
-  f.width_mm = 6000;
-  f.goal_width_mm = 1500;
-  f.penalty_area_length_mm = 1650;
-  f.penalty_area_width_mm = 4000;
-  f.penalty_mark_distance_mm = 1300;
-  f.centre_circle_diameter_mm = 1500;
-  return f;
-}
-
 float distance(const Pose2D& a, const Pose2D& b) { return std::hypot(a.x_mm - b.x_mm, a.y_mm - b.y_mm); }
 
 // --- hand-worked on the 2011 field -----------------------------------------------------

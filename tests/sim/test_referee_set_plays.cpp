@@ -11,18 +11,6 @@ namespace {
 
 const RobotId kRed2{0, 2}, kBlue2{1, 2}, kBlueGoalie{1, 1};
 
-FieldDef spl2020_field() {
-  FieldDef f;
-  f.length_mm = 9000;
-  f.width_mm = 6000;
-  f.goal_width_mm = 1500;
-  f.penalty_area_length_mm = 1650;
-  f.penalty_area_width_mm = 4000;
-  f.penalty_mark_distance_mm = 1300;
-  f.centre_circle_diameter_mm = 1500;
-  return f;
-}
-
 class SetPlays : public RefereeTest {
  protected:
   void SetUp() override {
