@@ -13,6 +13,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "embedded_python.hpp"
 #include "touchline/robot/robot.hpp"
 
 namespace fs = std::filesystem;
@@ -26,29 +27,14 @@ using touchline::python::PythonBehaviourError;
 
 namespace {
 
-/// One interpreter for the test process, as robot_shim holds one.
-class Interpreter : public testing::Environment {
- public:
-  void SetUp() override {
-    // The shim must not write bytecode by itself, whatever the user's environment says.
-    unsetenv("PYTHONDONTWRITEBYTECODE");
-    guard_ = std::make_unique<py::scoped_interpreter>(false, 0, nullptr, false);
-  }
-  void TearDown() override { guard_.reset(); }
+using testing_support::count;
 
- private:
-  std::unique_ptr<py::scoped_interpreter> guard_;
-};
-[[maybe_unused]] testing::Environment* const kInterpreter = testing::AddGlobalTestEnvironment(new Interpreter);
+// The shim must not write bytecode by itself, whatever the user's environment says.
+[[maybe_unused]] testing::Environment* const kInterpreter =
+    testing::AddGlobalTestEnvironment(new testing_support::EmbeddedPython({"PYTHONDONTWRITEBYTECODE"}));
 
 const fs::path kFixtures = TOUCHLINE_PY_FIXTURES;
 constexpr int64_t kCheckUs = 250000;
-
-int count(const std::string& text, const std::string& needle) {
-  int n = 0;
-  for (auto at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
-  return n;
-}
 
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> lines;
@@ -81,27 +67,17 @@ SenseFrame frame_with(RobotSense sense, int64_t frame_index) {
 class PythonRobot : public testing::Test {
  protected:
   void SetUp() override {
-    std::string pattern = (fs::temp_directory_path() / "touchline-py-XXXXXX").string();
-    ASSERT_NE(mkdtemp(pattern.data()), nullptr);
-    dir_ = pattern;
+    dir_ = testing_support::make_temp_dir("touchline-py");
+    ASSERT_FALSE(dir_.empty());
   }
   void TearDown() override {
     robot_.reset();
     fs::remove_all(dir_);
   }
 
-  /// Copies fixtures/<fixture> to <dir>/<as>. An edit must be visible to the watcher, as
-  /// any real edit is some time later: if the copy happens to keep the file's mtime and
-  /// size (same clock tick, same length), its mtime moves on by 1 ms.
+  /// Copies fixtures/<fixture> to <dir>/<as>, as an edit the watcher sees.
   void install(const std::string& fixture, const std::string& as = "behaviour.py") {
-    const fs::path target = dir_ / as;
-    std::error_code ec;
-    const bool existed = fs::exists(target);
-    const auto old_time = existed ? fs::last_write_time(target) : fs::file_time_type{};
-    const auto old_size = existed ? fs::file_size(target) : 0;
-    fs::copy_file(kFixtures / fixture, target, fs::copy_options::overwrite_existing);
-    if (existed && fs::last_write_time(target) == old_time && fs::file_size(target) == old_size)
-      fs::last_write_time(target, old_time + std::chrono::milliseconds(1));
+    testing_support::copy_as_edit(kFixtures / fixture, dir_ / as);
   }
 
   PythonBehaviourDef def(const std::string& module = "behaviour") {

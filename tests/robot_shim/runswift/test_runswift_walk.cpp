@@ -27,13 +27,18 @@ struct Outcome {
   std::string warnings;
 };
 
-Outcome walk(const api::ActionCommand::Body& body, double seconds) {
+/// A MotionAdapter running their walk, its warnings into `warnings`.
+MotionAdapter runswift_motion(std::ostringstream& warnings) {
   WalkEngineDef def;
   def.name = "runswift";
-  std::ostringstream warnings;
   MotionDef motion_def;
   motion_def.warnings = &warnings;
-  MotionAdapter motion(make_walk_engine(def, WalkDef{}, KickDef{}), motion_def);
+  return MotionAdapter(make_walk_engine(def, WalkDef{}, KickDef{}), motion_def);
+}
+
+Outcome walk(const api::ActionCommand::Body& body, double seconds) {
+  std::ostringstream warnings;
+  MotionAdapter motion = runswift_motion(warnings);
   api::Blackboard blackboard;
   blackboard.behaviour.request.body = body;
   Outcome run;
@@ -80,12 +85,8 @@ TEST(RunswiftWalk, AnOptionFileThatDoesNotParseIsOneLineNamingIt) {
 }
 
 TEST(RunswiftWalk, TheirKickSwingsTheKickingFootForward) {
-  WalkEngineDef def;
-  def.name = "runswift";
   std::ostringstream warnings;
-  MotionDef motion_def;
-  motion_def.warnings = &warnings;
-  MotionAdapter motion(make_walk_engine(def, WalkDef{}, KickDef{}), motion_def);
+  MotionAdapter motion = runswift_motion(warnings);
   api::Blackboard blackboard;
   for (int i = 0; i < 200; ++i) motion.tick(blackboard); // crouch, ready
   for (auto foot : {api::ActionCommand::Foot::LEFT, api::ActionCommand::Foot::RIGHT}) {

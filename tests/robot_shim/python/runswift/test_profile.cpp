@@ -16,6 +16,7 @@
 #include "touchline/python/python_behaviour.hpp"
 #include "touchline/python/runswift/team_message.hpp"
 #include "touchline/robot/robot.hpp"
+#include "../embedded_python.hpp"
 
 namespace fs = std::filesystem;
 namespace py = pybind11;
@@ -27,50 +28,30 @@ using touchline::python::PythonBehaviourDef;
 
 namespace {
 
-class Interpreter : public testing::Environment {
- public:
-  void SetUp() override {
-    unsetenv("RUNSWIFT_CHECKOUT_DIR");
-    unsetenv("LOG_PATH");
-    guard_ = std::make_unique<py::scoped_interpreter>(false, 0, nullptr, false);
-  }
-  void TearDown() override { guard_.reset(); }
+using testing_support::count;
 
- private:
-  std::unique_ptr<py::scoped_interpreter> guard_;
-};
-[[maybe_unused]] testing::Environment* const kInterpreter = testing::AddGlobalTestEnvironment(new Interpreter);
+// What the profile sets up itself must not come from the user's environment.
+[[maybe_unused]] testing::Environment* const kInterpreter = testing::AddGlobalTestEnvironment(
+    new testing_support::EmbeddedPython({"RUNSWIFT_CHECKOUT_DIR", "LOG_PATH"}));
 
 const fs::path kFixtures = TOUCHLINE_RUNSWIFT_FIXTURES;
 const fs::path kOurBehaviour = TOUCHLINE_RUNSWIFT_BEHAVIOUR;
 constexpr int64_t kCheckUs = 250000;
 
-int count(const std::string& text, const std::string& needle) {
-  int n = 0;
-  for (auto at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
-  return n;
-}
-
 class RunswiftRobot : public testing::Test {
  protected:
   void SetUp() override {
-    std::string pattern = (fs::temp_directory_path() / "touchline-rs-XXXXXX").string();
-    ASSERT_NE(mkdtemp(pattern.data()), nullptr);
-    dir_ = pattern;
+    dir_ = testing_support::make_temp_dir("touchline-rs");
+    ASSERT_FALSE(dir_.empty());
   }
   void TearDown() override {
     robot_.reset();
     fs::remove_all(dir_);
   }
 
-  /// Copies fixtures/<fixture> to <dir>/<as>, visibly newer than what it replaces.
+  /// Copies fixtures/<fixture> to <dir>/<as>, as an edit the watcher sees.
   void install(const std::string& fixture, const std::string& as = "behaviour.py") {
-    const fs::path target = dir_ / as;
-    const bool existed = fs::exists(target);
-    const auto old_time = existed ? fs::last_write_time(target) : fs::file_time_type{};
-    fs::copy_file(kFixtures / fixture, target, fs::copy_options::overwrite_existing);
-    if (existed && fs::last_write_time(target) <= old_time)
-      fs::last_write_time(target, old_time + std::chrono::milliseconds(1));
+    testing_support::copy_as_edit(kFixtures / fixture, dir_ / as);
   }
 
   void start(std::map<std::string, std::string> params = {}) {
