@@ -273,6 +273,8 @@ class Launcher:
                             for e in watch.match_events if e.kind == e.FALL]
         summary["set_plays"] = [{"sim_s": e.utime / 1e6, "team": e.team, "what": e.text}
                                 for e in watch.match_events if e.kind == e.SET_PLAY and e.team >= 0]
+        summary["game_stuck"] = [{"sim_s": e.utime / 1e6, "kickoff_team": e.team, "what": e.text}
+                                 for e in watch.match_events if e.kind == e.GAME_STUCK]
         summary["shim_deaths"] = keeper.summary()
         summary["launcher_malformed"] = dict(watch.malformed)
         self.report(summary, targets)
@@ -322,6 +324,9 @@ class Launcher:
                 name = play["what"].rsplit(" for team ", 1)[0]
                 set_plays[name] = set_plays.get(name, 0) + 1
             print("Set plays: " + ", ".join(f"{k} {n}" for k, n in sorted(set_plays.items())))
+        if summary["game_stuck"]:
+            print(f"Game stuck: {len(summary['game_stuck'])} times (kick-off again), at "
+                  + ", ".join(clock(s["sim_s"]) for s in summary["game_stuck"]))
         last = "kick-off spot off by" if a.behaviour == "goto" else ""
         print(f"{'robot':<12}{'answered':>9}{'missed':>7}{'behaviour CPU µs':>19}{'localisation rms':>20}"
               f"{'penalties':>10}   {'ended at (mm)':<16}{last}")

@@ -101,7 +101,7 @@ class MatchWatch:
 
     def _check_event(self, msg) -> None:
         require(msg.utime >= 0, f"utime {msg.utime}")
-        require(msg.STATE_CHANGE <= msg.kind <= msg.SET_PLAY, f"kind {msg.kind}")
+        require(msg.STATE_CHANGE <= msg.kind <= msg.GAME_STUCK, f"kind {msg.kind}")
         require(msg.team in (-1, 0, 1), f"team {msg.team}")
         require(0 <= msg.player <= self._team_size, f"player {msg.player}")
 

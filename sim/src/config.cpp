@@ -34,6 +34,7 @@ void bind(IniSchema& s, PhysicsDef& d) {
       .bind("physics.foot_width_mm", &d.foot_width_mm, "foot width (robot y), mm")
       .bind("physics.foot_mass_kg", &d.foot_mass_kg, "mass of one foot, kg")
       .bind("physics.foot_friction", &d.foot_friction, "friction of every contact")
+      .bind("physics.max_foot_spread_mm", &d.max_foot_spread_mm, "a robot's foot centres at most this far apart, mm")
       .bind("physics.wall_restitution", &d.wall_restitution, "ball bounce off the walls, 0..1")
       .bind("physics.post_restitution", &d.post_restitution, "ball bounce off the posts, 0..1")
       .bind("physics.net_restitution", &d.net_restitution, "ball bounce off the nets, 0..1")
@@ -138,6 +139,7 @@ void validate_physics(const PhysicsDef& p) {
   require_range("physics.foot_width_mm", p.foot_width_mm, kMinBody_mm, kMaxBody_mm);
   require_range("physics.foot_mass_kg", p.foot_mass_kg, kMinFootMass_kg, kMaxFootMass_kg);
   require_non_negative("physics.foot_friction", p.foot_friction, kMaxFriction);
+  require_range("physics.max_foot_spread_mm", p.max_foot_spread_mm, kMinBody_mm, kMaxBody_mm);
   require_fraction("physics.wall_restitution", p.wall_restitution);
   require_fraction("physics.post_restitution", p.post_restitution);
   require_fraction("physics.net_restitution", p.net_restitution);
@@ -165,6 +167,9 @@ void validate(const WorldConfig& config) {
   validate(config.perception);
   validate(config.rules);
   validate(config.comm);
+  if (config.match.foot_separation_mm > config.physics.max_foot_spread_mm)
+    throw ConfigError("match.foot_separation_mm must be <= physics.max_foot_spread_mm (got " +
+                      str(config.match.foot_separation_mm) + " > " + str(config.physics.max_foot_spread_mm) + ")");
   const Field field(config.field);
   if (!field.on_carpet(config.match.ball_start_x_mm, config.match.ball_start_y_mm))
     throw ConfigError("match.ball_start_x_mm/_y_mm must be on the carpet (got " +

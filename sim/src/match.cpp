@@ -1,6 +1,7 @@
 #include "touchline/sim/match.hpp"
 
 #include "touchline/angles.hpp"
+#include "touchline/parse_number.hpp"
 #include "touchline/random.hpp"
 
 #include <algorithm>
@@ -247,6 +248,11 @@ void Match::carry_out(const RefereeDecision& d) {
                        change.set_play == SetPlay::kNone
                            ? std::string("set play over")
                            : std::string(to_string(change.set_play)) + " for team " + std::to_string(change.team)});
+  if (d.game_stuck)
+    events_.push_back({d.game_stuck->utime, MatchEvent::Kind::kGameStuck, {}, d.game_stuck->kickoff_team,
+                       std::string("game stuck (") + (d.game_stuck->ball_untouched ? "ball untouched" : "ball wedged") +
+                           " for " + format_number(config_.rules.game_stuck_s) + " s), kick-off for team " +
+                           std::to_string(d.game_stuck->kickoff_team)});
   for (RobotId id : d.stopped)
     if (auto robot = on_field_.find(id); robot != on_field_.end()) robot->second.stopped = true;
 }

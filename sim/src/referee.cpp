@@ -23,7 +23,7 @@ const char* to_string(PenaltyKind kind) {
 
 bool RefereeDecision::empty() const {
   return state_changes.empty() && goals.empty() && penalties.empty() && released.empty() &&
-         placements.empty() && !ball && stopped.empty() && set_plays.empty();
+         placements.empty() && !ball && stopped.empty() && set_plays.empty() && !game_stuck;
 }
 
 Referee::Referee(const Field& field, const RulesDef& rules, int team_size, float ball_diameter_mm)
@@ -59,6 +59,7 @@ RefereeDecision Referee::update(const RefereeInput& in) {
   if (state_ == GameState::kPlaying && !goal) {
     check_set_play_over(in, d);
     if (rules_.ball_out) rules_.set_plays ? award_ball_out(in, d) : check_ball_out(in, d);
+    if (rules_.game_stuck_s > 0 && state_ == GameState::kPlaying) check_game_stuck(in, d);
   }
   const bool robots_walk = state_ == GameState::kReady || state_ == GameState::kSet ||
                            state_ == GameState::kPlaying;

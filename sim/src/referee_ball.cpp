@@ -97,6 +97,27 @@ void Referee::check_ball_out(const RefereeInput& in, RefereeDecision& d) const {
   d.ball = put;
 }
 
+// The watch restarts whenever PLAYING starts (kick-off) and while a set play runs (it has
+// its own time limit), so only open play counts. A touch restarts the no-touch count; the
+// ball leaving a game_stuck_radius_mm circle about where the count began restarts the
+// no-progress count.
+void Referee::check_game_stuck(const RefereeInput& in, RefereeDecision& d) {
+  const bool restart = set_play_ != SetPlay::kNone || state_since_utime_ > progress_utime_;
+  if (restart || std::hypot(in.ball.x_mm - progress_x_mm_, in.ball.y_mm - progress_y_mm_) > rules_.game_stuck_radius_mm) {
+    progress_x_mm_ = in.ball.x_mm;
+    progress_y_mm_ = in.ball.y_mm;
+    progress_utime_ = in.utime;
+  }
+  if (restart || in.touched_by_team[0] || in.touched_by_team[1]) last_ball_touch_utime_ = in.utime;
+  const int64_t limit_us = detail::to_us(rules_.game_stuck_s);
+  const bool untouched = in.utime - last_ball_touch_utime_ >= limit_us;
+  if (!untouched && in.utime - progress_utime_ < limit_us) return;
+  kickoff_team_ = in.last_touch_team >= 0 ? 1 - in.last_touch_team : 1 - kickoff_team_;
+  d.game_stuck = GameStuck{in.utime, kickoff_team_, untouched};
+  enter(GameState::kReady, in.utime, d);
+  d.ball = BallPlacement{BallPlacement::Why::kKickOff, 0.f, 0.f};
+}
+
 // SPL: the referee puts the ball on the centre spot for every kick-off. The match puts
 // it down for the first (where its config says), the referee after a goal and at half
 // time, and again at SET if the robots nudged it while walking in READY.

@@ -28,7 +28,9 @@ void bind(IniSchema& s, RulesDef& d) {
       .bind("rules.ball_out_setback_mm", &d.ball_out_setback_mm, "towards the last toucher's goal, mm")
       .bind("rules.ball_out_inset_mm", &d.ball_out_inset_mm, "inside the line crossed, mm")
       .bind("rules.set_plays", &d.set_plays, "kick-ins, goal and corner kicks, pushing free and penalty kicks")
-      .bind("rules.set_play_s", &d.set_play_s, "a set play ends when its team touches the ball or after this, s");
+      .bind("rules.set_play_s", &d.set_play_s, "a set play ends when its team touches the ball or after this, s")
+      .bind("rules.game_stuck_s", &d.game_stuck_s, "no touch or no progress of the ball this long: kick-off, s (0: never)")
+      .bind("rules.game_stuck_radius_mm", &d.game_stuck_radius_mm, "a ball within this of one spot makes no progress, mm");
 }
 
 void validate(const RulesDef& d) {
@@ -48,6 +50,8 @@ void validate(const RulesDef& d) {
   require_non_negative("rules.ball_out_inset_mm", d.ball_out_inset_mm);
   require_positive("rules.set_play_s", d.set_play_s);
   require_non_negative("rules.getup_s", d.getup_s);
+  require_non_negative("rules.game_stuck_s", d.game_stuck_s);
+  require_positive("rules.game_stuck_radius_mm", d.game_stuck_radius_mm);
   require_fraction("rules.fall_probability", d.fall_probability);
 }
 

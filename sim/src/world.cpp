@@ -212,6 +212,18 @@ struct World::Impl {
     return foot;
   }
 
+  /// The legs: a rope between the foot centres, slack until they are max_foot_spread_mm
+  /// apart (Box2D's distance joint with only its upper limit), so a push that would part
+  /// the feet drags the other foot along, as it drags a Nao's whole body.
+  void add_legs(b2Body* left, b2Body* right) {
+    b2DistanceJointDef legs;
+    legs.Initialize(left, right, left->GetPosition(), right->GetPosition());
+    legs.minLength = 0.f; // Box2D raises it to its linear slop: the feet may pass each other
+    legs.maxLength = to_m(physics.max_foot_spread_mm);
+    legs.stiffness = legs.damping = 0.f; // no spring: only the limit acts
+    world.CreateJoint(&legs);
+  }
+
   /// Foot poses of a robot standing at `body`: left at +sep/2, right at -sep/2 (body y).
   std::pair<Pose2D, Pose2D> feet_at(const Pose2D& body) const {
     const b2Vec2 offset = rotate(body.theta_rad, b2Vec2(0, foot_separation_mm / 2));
@@ -295,6 +307,7 @@ int World::add_robot(RobotId id, const Pose2D& body) {
   robot.id = id;
   robot.left = impl_->add_foot(index, left);
   robot.right = impl_->add_foot(index, right);
+  impl_->add_legs(robot.left, robot.right);
   impl_->robots.push_back(robot);
   return index;
 }

@@ -166,6 +166,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadValue{"physics.substeps=0", "physics.substeps must be 1..100 (got 0)"},
         BadValue{"physics.ball_restitution=1.5", "physics.ball_restitution must be in [0, 1] (got 1.5)"},
         BadValue{"physics.net_restitution=-0.1", "physics.net_restitution must be in [0, 1] (got -0.1)"},
+        BadValue{"match.foot_separation_mm=400",
+                 "match.foot_separation_mm must be <= physics.max_foot_spread_mm (got 400 > 300)"},
+        BadValue{"physics.max_foot_spread_mm=5", "physics.max_foot_spread_mm must be in [10, 1000] (got 5)"},
         BadValue{"field.goal_width_mm=3950",
                  "field.goal_width_mm must be < field.width_mm - goal_post_diameter_mm = 3900 (got 3950)"},
         BadValue{"field.goal_box_length_mm=3000",
@@ -302,14 +305,16 @@ TEST(Config, ExtremeValuesWithinTheBoundsKeepTheWorldSane) {
                                 "physics.foot_mass_kg=0.01", "physics.ball_rolling_decel_mm_s2=100000",
                                 "physics.ball_linear_damping=100", "physics.foot_friction=10",
                                 "physics.substeps=100", "physics.velocity_iterations=100",
-                                "physics.position_iterations=100", "match.foot_separation_mm=1000"}));
+                                "physics.position_iterations=100", "physics.max_foot_spread_mm=1000",
+                                "match.foot_separation_mm=1000"}));
   // Everything at its smallest, the feet as heavy as allowed (mass ratio 1e5).
   expect_world_stays_sane(with({"physics.ball_diameter_mm=10", "physics.ball_mass_kg=0.001",
                                 "physics.foot_length_mm=10", "physics.foot_width_mm=10",
                                 "physics.foot_mass_kg=100", "physics.ball_rolling_decel_mm_s2=0",
                                 "physics.ball_linear_damping=0", "physics.foot_friction=0",
                                 "physics.substeps=1", "physics.velocity_iterations=1",
-                                "physics.position_iterations=1", "match.foot_separation_mm=0.001"}));
+                                "physics.position_iterations=1", "physics.max_foot_spread_mm=10",
+                                "match.foot_separation_mm=0.001"}));
   // A heavy ball among the lightest feet, and the smallest field the rules allow around the goal.
   expect_world_stays_sane(with({"physics.ball_mass_kg=10", "physics.foot_mass_kg=0.01",
                                 "field.length_mm=1300", "field.width_mm=2300", "field.border_mm=600",

@@ -267,6 +267,28 @@ TEST(Match, ABallOutWithSetPlaysIsAKickInTheRobotsSenseAndItsTeamsTouchEndsIt) {
   EXPECT_EQ(events.back().text, "set play over");
 }
 
+TEST(Match, AnUntouchedBallIsAStuckGameTheMatchTellsAndRestartsWithAKickOff) {
+  sim::WorldConfig config = refereed_config();
+  sim::Match match(config);
+  match.join({0, 1}, 9, 0);
+  match.join({1, 1}, 8, 0);
+  match.start();
+  while (match.game().state != GameState::kPlaying) match.advance();
+  match.world().place_ball(800, 600, 0, 0);
+  const int64_t kickoff_utime = match.utime();
+  match.take_events();
+  while (match.game().state == GameState::kPlaying) match.advance(); // nobody moves
+  EXPECT_EQ(match.game().state, GameState::kReady);
+  EXPECT_NEAR(static_cast<double>(match.utime() - kickoff_utime) * 1e-6, config.rules.game_stuck_s, 0.04);
+  EXPECT_FLOAT_EQ(match.world().ball().x_mm, 0.f); // back on the centre spot
+  const std::vector<sim::MatchEvent> events = match.take_events();
+  const auto stuck = std::find_if(events.begin(), events.end(),
+                                  [](const sim::MatchEvent& e) { return e.kind == sim::MatchEvent::Kind::kGameStuck; });
+  ASSERT_NE(stuck, events.end());
+  EXPECT_EQ(stuck->team, 1); // nobody touched it and team 0 kicked off: team 1's kick-off
+  EXPECT_EQ(stuck->text, "game stuck (ball untouched for 30 s), kick-off for team 1");
+}
+
 TEST(Match, RobotsSeeThroughTheCameraAndTheSeedFixesTheNoise) {
   auto seen_from = [](uint64_t seed) {
     sim::WorldConfig config;

@@ -50,6 +50,7 @@ TEST_F(RefereeTest, ChangesAreTimedExactlyWhateverTheUpdateRate) {
 }
 
 TEST_F(RefereeTest, CameraFrameUpdatesEndTheHalfAtExactlyHalfSecondsOfPlay) {
+  rules.game_stuck_s = 0; // whole halves without a touch: the clock alone
   // Updates at every 30 Hz frame start (33.3 ms apart, not dividing the durations).
   std::vector<StateChange> changes;
   for (int64_t frame = 0; frame_start_utime(frame) <= at_s(651.5); ++frame) {
@@ -115,6 +116,7 @@ TEST_F(RefereeTest, HalfTimeGivesTheSecondHalfWithTheOtherTeamKickingOff) {
 }
 
 TEST_F(RefereeTest, FullTimeFinishesTheMatchForGood) {
+  rules.game_stuck_s = 0; // whole halves without a touch: the clock alone
   start_playing();
   update_at(702); // second half PLAYING from 702 s
   auto d = update_at(1301.999);

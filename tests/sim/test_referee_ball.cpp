@@ -2,6 +2,8 @@
 // towards the own goal of the team that touched it last. SPL 2011 field: half length
 // 3000, half width 2000, goal half-width 700, posts 100 mm; ball radius 32.5 mm.
 #include <gtest/gtest.h>
+#include <functional>
+#include <optional>
 
 #include "referee_fixture.hpp"
 
@@ -92,6 +94,88 @@ TEST_F(RefereeTest, BallOutIsLeftAloneOutsidePlayingOrWhenSwitchedOff) {
   referee.reset();
   start_playing();
   EXPECT_FALSE(update_at(60).ball.has_value());
+}
+
+} // namespace
+} // namespace touchline::sim
+
+// --- a stuck game (Global Game Stuck) ---------------------------------------------------
+
+namespace touchline::sim {
+namespace {
+
+class GameStuckTest : public RefereeTest {
+ protected:
+  /// Updates every frame (1/30 s) from `from_s` to `to_s`; the first stuck game, if any.
+  std::optional<GameStuck> play_until_stuck(double from_s, double to_s,
+                                            const std::function<void(double)>& each_frame = {}) {
+    for (double s = from_s; s <= to_s; s += 1.0 / 30) {
+      if (each_frame) each_frame(s);
+      const RefereeDecision d = update_at(s);
+      input.touched_by_team = {false, false};
+      if (d.game_stuck) return d.game_stuck;
+    }
+    return std::nullopt;
+  }
+};
+
+TEST_F(GameStuckTest, NoTouchForThirtySecondsRestartsWithAKickOffForTheOpponentsOfTheLastToucher) {
+  put_ball(800, 300);
+  start_playing();
+  input.last_touch_team = 0;
+  const auto stuck = play_until_stuck(kKickOffS + 0.1, kKickOffS + 40);
+  ASSERT_TRUE(stuck);
+  EXPECT_NEAR(static_cast<double>(stuck->utime) / kSecond, kKickOffS + 30, 0.05);
+  EXPECT_TRUE(stuck->ball_untouched);
+  EXPECT_EQ(stuck->kickoff_team, 1);
+  EXPECT_EQ(ref().state(), GameState::kReady);
+  EXPECT_EQ(ref().info().kickoff_team, 1);
+}
+
+TEST_F(GameStuckTest, AWedgedBallIsStuckThoughRobotsKeepTouchingIt) {
+  put_ball(-1200, 900);
+  start_playing();
+  input.last_touch_team = 1;
+  // Touched every second, rattling within 100 mm of one spot.
+  const auto stuck = play_until_stuck(kKickOffS + 0.1, kKickOffS + 40, [&](double s) {
+    put_ball(-1200 + 100 * static_cast<float>(std::sin(s)), 900);
+    if (std::fmod(s, 1.0) < 1.0 / 30) input.touched_by_team = {true, true};
+  });
+  ASSERT_TRUE(stuck);
+  EXPECT_FALSE(stuck->ball_untouched);
+  EXPECT_EQ(stuck->kickoff_team, 0);
+}
+
+TEST_F(GameStuckTest, ABallInPlayIsNotStuck) {
+  put_ball(0, 0);
+  start_playing();
+  // Touched every 10 s and carried up and down the field: two minutes of play.
+  const auto stuck = play_until_stuck(kKickOffS + 0.1, kKickOffS + 120, [&](double s) {
+    put_ball(2000 * static_cast<float>(std::sin(s / 10)), 0);
+    if (std::fmod(s, 10.0) < 1.0 / 30) input.touched_by_team = {true, false};
+  });
+  EXPECT_FALSE(stuck);
+  EXPECT_EQ(ref().state(), GameState::kPlaying);
+}
+
+TEST_F(GameStuckTest, SwitchedOffItNeverFires) {
+  rules.game_stuck_s = 0;
+  put_ball(800, 300);
+  start_playing();
+  EXPECT_FALSE(play_until_stuck(kKickOffS + 0.1, kKickOffS + 100));
+  EXPECT_EQ(ref().state(), GameState::kPlaying);
+}
+
+TEST_F(GameStuckTest, TheWatchStartsAgainAtEveryKickOff) {
+  put_ball(800, 300);
+  start_playing();
+  ASSERT_TRUE(play_until_stuck(kKickOffS + 0.1, kKickOffS + 40)); // stuck at 81 s: READY, SET, PLAYING
+  const double second_kickoff_s = kKickOffS + 30 + rules.ready_s + rules.set_s;
+  update_at(second_kickoff_s);
+  ASSERT_EQ(ref().state(), GameState::kPlaying);
+  const auto stuck = play_until_stuck(second_kickoff_s + 0.1, second_kickoff_s + 40);
+  ASSERT_TRUE(stuck);
+  EXPECT_NEAR(static_cast<double>(stuck->utime) / kSecond, second_kickoff_s + 30, 0.05);
 }
 
 } // namespace

@@ -185,6 +185,7 @@ TEST_F(Pushing, ReEntrySpotTakenMovesAlongTheTouchline) {
 }
 
 TEST_F(RefereeTest, HalfTimeEndsEveryPenalty) {
+  rules.game_stuck_s = 0; // whole halves without a touch: the clock alone
   start_playing();
   put_robot(kRed3, -2800.f, 0.f, 0.f); // illegal defender at 640 s, until 670 s
   apply(update_at(640));

@@ -74,18 +74,18 @@ TEST_P(FootDisplacement, MatchesTheCommandInTheBodyFrame) {
   TickMotion motion;
   motion.left.dx_mm = 10;  // 1 m/s forward
   motion.right.dy_mm = 4;  // 0.4 m/s to the robot's left
-  for (int t = 0; t < 100; ++t) world.step({motion});
+  for (int t = 0; t < 20; ++t) world.step({motion}); // 200 mm and 80 mm: within the legs' reach
   const RobotTruth end = world.robot(0);
 
   const float c = std::cos(heading), s = std::sin(heading);
   // Float precision, far inside the +-0.5 mm a walk needs (measured: < 0.01 mm).
   constexpr float kTol = 0.02f;
-  EXPECT_NEAR(end.left_foot.x_mm, start.left_foot.x_mm + 1000 * c, kTol);
-  EXPECT_NEAR(end.left_foot.y_mm, start.left_foot.y_mm + 1000 * s, kTol);
-  EXPECT_NEAR(end.right_foot.x_mm, start.right_foot.x_mm - 400 * s, kTol);
-  EXPECT_NEAR(end.right_foot.y_mm, start.right_foot.y_mm + 400 * c, kTol);
+  EXPECT_NEAR(end.left_foot.x_mm, start.left_foot.x_mm + 200 * c, kTol);
+  EXPECT_NEAR(end.left_foot.y_mm, start.left_foot.y_mm + 200 * s, kTol);
+  EXPECT_NEAR(end.right_foot.x_mm, start.right_foot.x_mm - 80 * s, kTol);
+  EXPECT_NEAR(end.right_foot.y_mm, start.right_foot.y_mm + 80 * c, kTol);
   EXPECT_NEAR(normalise_angle(end.body.theta_rad - heading), 0, 1e-5f);
-  EXPECT_EQ(world.ticks(), 100);
+  EXPECT_EQ(world.ticks(), 20);
 }
 
 INSTANTIATE_TEST_SUITE_P(Headings, FootDisplacement,
@@ -133,10 +133,10 @@ TEST(World, FeetOfOneRobotPassThroughEachOther) {
   park_ball(world);
   const RobotTruth start = world.robot(0);
   TickMotion motion;
-  motion.left.dy_mm = -10; // onto the right foot's place and beyond
-  for (int t = 0; t < 15; ++t) world.step({motion});
+  motion.left.dy_mm = -10; // onto the right foot, centres 20 mm apart: the soles overlap by 70 mm
+  for (int t = 0; t < 8; ++t) world.step({motion});
   const RobotTruth end = world.robot(0);
-  EXPECT_NEAR(end.left_foot.y_mm, start.left_foot.y_mm - 150, 0.02f);
+  EXPECT_NEAR(end.left_foot.y_mm, start.left_foot.y_mm - 80, 0.02f);
   EXPECT_NEAR(end.left_foot.x_mm, start.left_foot.x_mm, 0.02f);
   EXPECT_NEAR(end.right_foot.x_mm, start.right_foot.x_mm, 1e-3f);
   EXPECT_NEAR(end.right_foot.y_mm, start.right_foot.y_mm, 1e-3f);
@@ -408,6 +408,68 @@ TEST(World, ARobotPushesAStandingOne) {
   EXPECT_LT(worst, 5.5f);
   EXPECT_GT(world.robot(1).body.x_mm, 100) << "the standing robot was pushed back";
   EXPECT_LT(world.robot(0).body.x_mm, world.robot(1).body.x_mm);
+}
+
+// --- the legs hold a robot together ------------------------------------------------------
+
+/// Foot centres' distance of robot `index`.
+float foot_spread(const World& world, int index) {
+  const RobotTruth r = world.robot(index);
+  return std::hypot(r.left_foot.x_mm - r.right_foot.x_mm, r.left_foot.y_mm - r.right_foot.y_mm);
+}
+
+// A robot walks at 0.5 m/s into a standing one from each of 16 directions, for 2 s, aimed at
+// the standing robot's left foot, its right foot or its middle: however it is hit, the
+// standing robot's feet never part further than the legs allow. Box2D keeps a stretched
+// limit within its linear slop (5 mm).
+TEST(World, APushFromAnySideMovesTheRobotNotOneFootAway) {
+  const PhysicsDef physics;
+  float worst = 0;
+  float moved = 0;
+  for (int side = 0; side < 16; ++side) {
+    for (float aim_y_mm : {-50.f, 0.f, 50.f}) {
+      World world(FieldDef{}, physics);
+      world.add_robot(kRed1, Pose2D{0, 0, 0});
+      park_ball(world);
+      const float from = static_cast<float>(side) * kPi / 8;
+      const Pose2D start{400 * std::cos(from), 400 * std::sin(from) + aim_y_mm, normalise_angle(from + kPi)};
+      world.add_robot(kBlue1, start);
+      TickMotion forward;
+      forward.left.dx_mm = forward.right.dx_mm = 5;
+      for (int t = 0; t < 200; ++t) {
+        world.step({TickMotion{}, forward});
+        worst = std::max(worst, foot_spread(world, 0));
+      }
+      const Pose2D body = world.robot(0).body;
+      moved = std::max(moved, std::hypot(body.x_mm, body.y_mm));
+    }
+  }
+  EXPECT_LE(worst, physics.max_foot_spread_mm + 5.5f) << "feet parted " << worst << " mm";
+  EXPECT_GT(moved, 300.f) << "the pushed robot moved as a whole";
+}
+
+// The legs are slack below their length: a robot walking sideways, its feet 100 mm to
+// 250 mm apart, moves exactly as commanded.
+TEST(World, TheLegsDoNotHoldFeetWithinTheirReach) {
+  World world(FieldDef{}, PhysicsDef{});
+  world.add_robot(kRed1, Pose2D{0, 0, 0});
+  park_ball(world);
+  TickMotion apart;
+  apart.left.dy_mm = 1.5f; // 150 mm in 100 ticks
+  for (int t = 0; t < 100; ++t) world.step({apart});
+  EXPECT_NEAR(foot_spread(world, 0), 250.f, 0.5f);
+}
+
+// The legs stop a foot commanded beyond them: the other foot is dragged along.
+TEST(World, AFootCommandedBeyondTheLegsDragsTheOther) {
+  World world(FieldDef{}, PhysicsDef{});
+  world.add_robot(kRed1, Pose2D{0, 0, 0});
+  park_ball(world);
+  TickMotion apart;
+  apart.left.dy_mm = 5;
+  for (int t = 0; t < 100; ++t) world.step({apart}); // 500 mm, if nothing held it
+  EXPECT_LE(foot_spread(world, 0), world.physics().max_foot_spread_mm + 5.5f);
+  EXPECT_GT(world.robot(0).right_foot.y_mm, -50.f + 100.f) << "the right foot was dragged along";
 }
 
 // --- determinism ------------------------------------------------------------------------

@@ -8,7 +8,7 @@ from .lcm_types import import_touchline
 TRUTH, SENSE, GAME, STATUS, EVENT = "TL_TRUTH", "TL_SENSE", "TL_GAME", "TL_STATUS", "TL_EVENT"
 CHANNELS = (MATCH, TRUTH, SENSE, GAME, STATUS, EVENT)
 STATUS_NAMES = {1: "JOINED", 2: "ACTIVE", 3: "TIMED_OUT", 4: "REJOINED", 5: "REJECTED"}
-EVENT_KINDS = {0: "STATE_CHANGE", 1: "GOAL", 2: "PENALTY", 3: "RELEASED", 4: "FALL", 5: "BALL_OUT", 6: "SET_PLAY"}
+EVENT_KINDS = {0: "STATE_CHANGE", 1: "GOAL", 2: "PENALTY", 3: "RELEASED", 4: "FALL", 5: "BALL_OUT", 6: "SET_PLAY", 7: "GAME_STUCK"}
 RECENT_EVENTS = 5  # the latest match events each frame carries for the HUD
 
 _types = import_touchline()

@@ -17,6 +17,7 @@ struct MatchEvent {
     kFall = 4,        ///< `robot` fell (pushed)
     kBallOut = 5,     ///< the ball left the field and was put back
     kSetPlay = 6,     ///< a set play began (`team` takes it, `text` names it) or ended (team -1)
+    kGameStuck = 7,   ///< the game was stuck; `team` kicks off again, `text` says why
   };
   int64_t utime = 0;
   Kind kind = Kind::kStateChange;

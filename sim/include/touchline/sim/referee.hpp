@@ -107,6 +107,13 @@ struct BallPlacement {
   float x_mm = 0, y_mm = 0;
 };
 
+/// The game was stuck (RulesDef::game_stuck_s): `kickoff_team` kicks off again.
+struct GameStuck {
+  int64_t utime = 0;
+  int kickoff_team = 0;
+  bool ball_untouched = true; ///< no robot touched the ball (else: it made no progress)
+};
+
 /// A set play began (`set_play` and its `team`) or ended (kNone, team -1).
 struct SetPlayChange {
   SetPlay set_play = SetPlay::kNone;
@@ -124,6 +131,7 @@ struct RefereeDecision {
   std::vector<RobotPlacement> placements;  ///< removals, re-entries, SET's manual placements
   std::optional<BallPlacement> ball;
   std::vector<SetPlayChange> set_plays;    ///< set plays begun and ended, in order
+  std::optional<GameStuck> game_stuck;     ///< the game was stuck; a kick-off follows (state_changes)
   /// Contesting the ball, in contact with an opponent nearer it: the thesis' heuristic
   /// stops this robot's feet (2.2.4); the match may hold its motions for the frame.
   std::vector<RobotId> stopped;
@@ -188,6 +196,8 @@ class Referee {
   bool check_goal(const RefereeInput& in, RefereeDecision& d);
   void check_ball_out(const RefereeInput& in, RefereeDecision& d) const;
   void replace_ball_for_kickoff(const BallTruth& ball, RefereeDecision& d) const;
+  /// Global Game Stuck: no touch, or no progress of the ball, for rules_.game_stuck_s.
+  void check_game_stuck(const RefereeInput& in, RefereeDecision& d);
 
   // Set plays (referee_set_plays.cpp).
   void check_set_play_over(const RefereeInput& in, RefereeDecision& d);
@@ -224,6 +234,11 @@ class Referee {
   SetPlay set_play_ = SetPlay::kNone;
   int set_play_team_ = -1;
   int64_t set_play_until_utime_ = 0;
+  /// The stuck-game watch: when a robot last began touching the ball, and where the ball
+  /// was when it last moved game_stuck_radius_mm (each restarted with PLAYING and set plays).
+  int64_t last_ball_touch_utime_ = 0;
+  float progress_x_mm_ = 0, progress_y_mm_ = 0;
+  int64_t progress_utime_ = 0;
 
   std::map<RobotId, Penalty> penalties_;
   /// Last pushing penalty of each pair of opponents, (lower id, higher id): the cooldown.

@@ -42,6 +42,15 @@ struct RulesDef {
   bool set_plays = false;
   float set_play_s = 30.f; ///< a set play ends when its team touches the ball, or after this long, s
 
+  // --- a stuck game (SPL: Global Game Stuck) ---
+  /// No robot began touching the ball, or the ball stayed within game_stuck_radius_mm of
+  /// one spot, for this long of PLAYING (outside set plays): the game is stuck and restarts
+  /// with a kick-off (READY) for the opponents of the team that touched the ball last
+  /// (unknown: the team that did not take the last kick-off), s; 0: never.
+  float game_stuck_s = 30.f;
+  /// A ball wedged between robots that push on is stuck even while they touch it, mm.
+  float game_stuck_radius_mm = 500.f;
+
   // --- falls (beyond the thesis) ---
   float fall_probability = 0.3f; ///< chance that the robot pushed in a pushing foul falls, [0, 1]
   float getup_s = 5.f;           ///< a fallen robot lies this long before it stands again, s

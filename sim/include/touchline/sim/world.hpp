@@ -27,6 +27,10 @@ struct PhysicsDef {
   float foot_width_mm = 90.f;            ///< foot rectangle along the robot's y, mm
   float foot_mass_kg = 2.5f;             ///< half the robot: feet barely yield to the ball
   float foot_friction = 0.6f;            ///< Coulomb friction of every contact
+  /// The legs hold a robot together: its foot centres are never farther apart than this, mm.
+  /// A Nao's hips are 100 mm apart and its largest step (a kick's swing) about 200 mm; a push
+  /// moves the robot, not one foot away from the other.
+  float max_foot_spread_mm = 300.f;
   float wall_restitution = 0.3f;         ///< ball off the boundary walls, 0..1
   float post_restitution = 0.5f;         ///< ball off the goal posts, 0..1
   float net_restitution = 0.f;           ///< ball off the nets, 0..1: nets absorb the ball, so a goal stays in
