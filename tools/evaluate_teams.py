@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import argparse
 import json
-import os
 import sys
 from collections import Counter
 from pathlib import Path
@@ -59,7 +58,7 @@ def main() -> int:
     parser.add_argument("--experiments", nargs="+", choices=sorted(EXPERIMENTS), default=sorted(EXPERIMENTS))
     parser.add_argument("--build-dir", type=Path, default=ROOT / "build")
     parser.add_argument("--set", action="append", default=[], help="world config override for every match")
-    parser.add_argument("--workers", type=int, default=os.cpu_count(), help="matches at once (default: every core)")
+    parser.add_argument("--workers", type=int, default=sweep.CORES, help="matches at once (default: every core)")
     parser.add_argument("--out", type=Path, default=Path("team_results.json"))
     parser.add_argument("--sweep-out", type=Path, default=ROOT / "out" / "evaluate_teams",
                         help="the sweep's table, summary and plot (default out/evaluate_teams)")

@@ -33,6 +33,7 @@ from sweep_play import COLUMNS, play
 
 ROOT = Path(__file__).resolve().parents[1]
 EXIT_FAILED_MATCHES, EXIT_BAD_GRID = 1, 2
+CORES = len(os.sched_getaffinity(0))  # the cores this process may run on (a container's, not the host's)
 
 
 def parse_args(argv: list[str]) -> tuple[argparse.Namespace, list[dict]]:
@@ -47,10 +48,11 @@ def parse_args(argv: list[str]) -> tuple[argparse.Namespace, list[dict]]:
     p.add_argument("--set", action="append", default=[], metavar="SECTION.KEY=V1[,V2...]",
                    help="a world config value, every value a grid axis point (repeatable)")
     p.add_argument("--variant", action="append", default=[], metavar="'LAUNCHER OPTIONS'",
-                   help="launcher options as one string, every --variant a grid axis point (e.g. '--in-process')")
+                   help="launcher options as one string, every --variant a grid axis point; one that starts with "
+                        "a dash and has no space needs =, e.g. --variant=--in-process")
     p.add_argument("--seeds", help="the seeds every grid cell plays: 1-20, 1,3,5 or 1-5,10 (default 1)")
-    p.add_argument("--workers", type=int, default=os.cpu_count(),
-                   help=f"matches at once (default: every core, {os.cpu_count()} here); with --ray local, "
+    p.add_argument("--workers", type=int, default=CORES,
+                   help=f"matches at once (default: every core, {CORES} here); with --ray local, "
                         "the local Ray instance's CPUs")
     p.add_argument("--ray", metavar="ADDRESS",
                    help="play every match as a Ray task: HOST:PORT of a cluster's head, 'auto' (the cluster "
