@@ -1,27 +1,40 @@
-"""The team evaluation's stuck detector: spinning on the spot or pressed against a wall."""
-import math
+"""The team evaluation's results file: a sweep's rows in team_results.json's format, with
+the goal difference's 95 % interval."""
+import json
 import sys
 from pathlib import Path
 
+import pytest
+
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "tools"))
-import evaluate_teams as ev  # noqa: E402
-
-EDGE_X, EDGE_Y = 3700.0, 2700.0  # SPL 2011 carpet
-
-
-def samples(x, y, theta_step=0.0, dx=0.0):
-    return [(x + i * dx, y, i * theta_step, True) for i in range(ev.STUCK_WINDOW)]
+import evaluate_teams  # noqa: E402
+from sweep_play import COLUMNS  # noqa: E402
 
 
-def test_spinning_on_the_spot_is_stuck():
-    assert ev.stuck(samples(0, 0, theta_step=0.1), EDGE_X, EDGE_Y)  # 10 rad in 10 s
+def row(seed, goals0, goals1, status="ok"):
+    r = {c: "" for c in COLUMNS}
+    r.update(cell=0, label="py:Team v cpp:Team", seed=seed, status=status)
+    if status == "ok":
+        r.update(goals0=goals0, goals1=goals1, goal_difference=goals0 - goals1, falls0=2, falls1=1, sim_s=1300,
+                 penalty_kinds=json.dumps({"0:pushing": 2, "1:illegal defender": 1}), possession_frames0=600,
+                 possession_frames1=400, stuck_s0=1.5, stuck_s1=0.0)
+    return r
 
 
-def test_standing_against_the_wall_is_stuck():
-    assert ev.stuck(samples(3600, 0), EDGE_X, EDGE_Y)
+def test_each_experiment_keeps_its_matches_seed_by_seed_and_gains_the_interval():
+    result = evaluate_teams.experiment_result("py:Team", "cpp:Team", [row(2, 0, 1), row(1, 3, 0), row(3, 1, 1)])
+    assert result["team0"] == "py:Team" and result["team1"] == "cpp:Team"
+    first = result["matches"][0]
+    assert first == {"seed": 1, "score": [3, 0], "penalties": {"0:pushing": 2, "1:illegal defender": 1}, "falls": 3,
+                     "sim_s": 1300, "possession_frames": [600, 400], "stuck_s": [1.5, 0.0]}
+    assert [m["seed"] for m in result["matches"]] == [1, 2, 3]
+    assert result["goal_difference_mean"] == pytest.approx(2 / 3)
+    lo, hi = result["goal_difference_ci95"]
+    assert lo < 2 / 3 < hi
 
 
-def test_standing_in_the_field_or_walking_is_not():
-    assert not ev.stuck(samples(0, 0), EDGE_X, EDGE_Y)
-    assert not ev.stuck(samples(3400, 0, dx=-2), EDGE_X, EDGE_Y)  # walks away from the wall
-    assert not ev.stuck(samples(0, 0, theta_step=0.05), EDGE_X, EDGE_Y)  # 5 rad: less than a full turn
+def test_the_experiments_are_cells_of_one_sweep():
+    matches = evaluate_teams.matches_of(["ports", "supporters"], 3, ["rules.half_s=300"], ["--duration", "10"])
+    assert len(matches) == 6
+    assert {(m["cell"], m["team1"]) for m in matches} == {(0, "cpp:Team"), (1, "py:Striker")}
+    assert matches[0]["launch"] == ["--set", "rules.half_s=300", "--duration", "10"]

@@ -1,0 +1,27 @@
+"""The match statistics' stuck detector: spinning on the spot or pressed against a wall."""
+import math
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "tools"))
+import match_stats  # noqa: E402
+
+EDGE_X, EDGE_Y = 3700.0, 2700.0  # SPL 2011 carpet
+
+
+def samples(x, y, theta_step=0.0, dx=0.0):
+    return [(x + i * dx, y, i * theta_step, True) for i in range(match_stats.STUCK_WINDOW)]
+
+
+def test_spinning_on_the_spot_is_stuck():
+    assert match_stats.stuck(samples(0, 0, theta_step=0.1), EDGE_X, EDGE_Y)  # 10 rad in 10 s
+
+
+def test_standing_against_the_wall_is_stuck():
+    assert match_stats.stuck(samples(3600, 0), EDGE_X, EDGE_Y)
+
+
+def test_standing_in_the_field_or_walking_is_not():
+    assert not match_stats.stuck(samples(0, 0), EDGE_X, EDGE_Y)
+    assert not match_stats.stuck(samples(3400, 0, dx=-2), EDGE_X, EDGE_Y)  # walks away from the wall
+    assert not match_stats.stuck(samples(0, 0, theta_step=0.05), EDGE_X, EDGE_Y)  # 5 rad: less than a full turn
