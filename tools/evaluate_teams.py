@@ -19,6 +19,8 @@ import tempfile
 from collections import Counter, defaultdict
 from pathlib import Path
 
+from touchline_version import add_version_option
+
 ROOT = Path(__file__).resolve().parents[1]
 EXPERIMENTS = {"supporters": ("py:Team", "py:Striker"), "ports": ("py:Team", "cpp:Team")}
 SAMPLE_EVERY = 3                   # truth frames: 10 Hz is plenty for these statistics
@@ -100,6 +102,7 @@ def stuck(h: list, edge_x: float, edge_y: float) -> bool:
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    add_version_option(parser, "tools/evaluate_teams.py")
     parser.add_argument("--matches", type=int, default=20)
     parser.add_argument("--experiments", nargs="+", choices=sorted(EXPERIMENTS), default=sorted(EXPERIMENTS))
     parser.add_argument("--build-dir", type=Path, default=ROOT / "build")
