@@ -150,6 +150,20 @@ def test_off_a_terminal_progress_is_a_line_every_tenth_of_the_planned_match():
     assert none.returncode == 0 and " % of the match" not in none.stdout
 
 
+def test_each_goal_adds_its_stoppage_to_the_total_so_a_whole_match_still_ends_at_100_percent():
+    # A striker against a standing robot scores (seed 1); READY 2 s and SET 1 s again after it.
+    result = launch("--team-size", 1, "--team0", "cpp:Striker", "--team1", "cpp:stand", "--no-log",
+                    "--set", "rules.initial_s=0", "--set", "rules.ready_s=2", "--set", "rules.set_s=1",
+                    "--set", "rules.half_s=20")
+    assert result.returncode == 0, result.stderr
+    [goal] = [line for line in result.stdout.splitlines() if line.startswith("Goals: ")]
+    assert goal.count(" at ") == 1, goal
+    lines = [line for line in result.stdout.splitlines() if " % of the match" in line]
+    assert "of 46 s simulated" in lines[0] and "score 0:0" in lines[0], "before the goal: 2 x (0 + 2 + 1 + 20) s"
+    assert "100 % of the match, 49 of 49 s simulated" in lines[-1], result.stdout
+    assert any(line.startswith("Match: 49 s simulated") for line in result.stdout.splitlines())
+
+
 def test_bad_options_are_one_line(tmp_path):
     result = launch("--team-size", 9)
     assert result.returncode == 2
