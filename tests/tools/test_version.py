@@ -24,6 +24,9 @@ PROGRAMS = [
     ("tools/record_corpus.py", [PY, str(ROOT / "tools" / "record_corpus.py")]),
     ("tools/synthetic_policy.py", [PY, str(ROOT / "tools" / "synthetic_policy.py")]),
     ("touchline_viewer", [PY, "-m", "touchline_viewer"]),
+    ("learning/evaluate", [str(ROOT / "learning" / "evaluate")]),
+    ("learning/train_tiles", [str(ROOT / "learning" / "train_tiles")]),
+    ("learning/train_thesis", [str(ROOT / "learning" / "train_thesis")]),
 ]
 
 
