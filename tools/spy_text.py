@@ -5,8 +5,11 @@ decoded, the robots (status, place, chest LED) and the frame.
 
 Messages are decoded with Touchline's generated Python types (build/lcm_types/gen/python),
 chosen by each message's LCM fingerprint, so a channel of any name decodes. Each message
-ends in the bus's 32-byte authentication tag, which the decoders do not read; without the
-match secret the spy cannot tell a forged message from a real one, and says so.
+ends in the bus's 32-byte authentication tag (HMAC-SHA-256 over the channel, a zero byte and
+the encoding: bridge/lcm/bus.hpp). With the match secret ($TOUCHLINE_MATCH_SECRET, as the
+programs take it) the spy checks every tag and counts the messages without a valid one per
+channel ("forged"), decoding only the others; without it, it cannot tell a forged message
+from a real one, and says so.
 
   tools/spy --text                    live, until Ctrl-C
   tools/spy --text --once             one snapshot after --duration seconds (default 2), then exit
@@ -14,6 +17,8 @@ match secret the spy cannot tell a forged message from a real one, and says so.
 from __future__ import annotations
 
 import argparse
+import hashlib
+import hmac
 import importlib
 import math
 import os
@@ -74,6 +79,7 @@ def brief(value, depth: int = 0) -> str:
 class Channel:
     def __init__(self):
         self.count = 0
+        self.forged = 0              # messages without a valid tag (only known with the secret)
         self.bytes = 0
         self.times: deque = deque()  # wall times of the last RATE_WINDOW_S
         self.last = None             # the last decoded message, or None
@@ -89,10 +95,11 @@ class Channel:
 class Spy:
     """Everything heard on the bus, kept per channel; the robots and the frame from the world's messages."""
 
-    def __init__(self, url: str, types: dict):
+    def __init__(self, url: str, types: dict, secret: bytes | None = None):
         import lcm
 
         self.url = url
+        self.secret = secret
         self.types = types
         self.channels: dict[str, Channel] = {}
         self.robots: dict = {}  # (team, player) -> dict of what is known
@@ -120,6 +127,12 @@ class Spy:
             c.count += 1
             c.bytes += len(data)
             c.times.append(now)
+            if self.secret is not None:
+                payload, tag = data[:-TAG_BYTES], data[-TAG_BYTES:]
+                expected = hmac.new(self.secret, channel.encode() + b"\0" + payload, hashlib.sha256).digest()
+                if len(data) < TAG_BYTES or not hmac.compare_digest(tag, expected):
+                    c.forged += 1
+                    return  # not the match's: neither shown nor counted among the robots
             msg_type = self.types.get(data[:8])
             if msg_type is None:
                 c.last, c.last_error = None, "not a Touchline type"
@@ -159,17 +172,22 @@ class Spy:
             frame = "-" if self.frame is None else f"{self.frame} ({self.sim_s:.1f} s simulated)"
             head = (f"{self.url}: {len(self.channels)} channels, frame {frame}"
                     + (f", game {self.game}" if self.game else "")
-                    + f"; {now - self.started:.0f} s watched; tags not verified (no match secret)")
+                    + f"; {now - self.started:.0f} s watched; "
+                    + ("tags checked with the match secret" if self.secret is not None
+                       else "tags not verified (no match secret)"))
             channels = Table(title=head, title_justify="left", expand=False)
             for column, justify in (("channel", "left"), ("msgs", "right"), ("Hz", "right"),
-                                    ("bytes", "right"), ("last message", "left")):
+                                    ("bytes", "right"), *((("forged", "right"),) if self.secret else ()),
+                                    ("last message", "left")):
                 channels.add_column(column, justify=justify, no_wrap=True,
                                     max_width=max(20, width - 50) if column == "last message" else None)
             for name in sorted(self.channels):
                 c = self.channels[name]
-                last = brief(c.last) if c.last is not None else f"(undecoded: {c.last_error})"
+                last = (brief(c.last) if c.last is not None else f"(undecoded: {c.last_error})" if c.last_error
+                        else "(none with a valid tag)")
                 size = c.bytes // c.count
-                channels.add_row(name, str(c.count), f"{c.rate(now, now - self.started):.1f}", str(size), last)
+                forged = (str(c.forged),) if self.secret else ()
+                channels.add_row(name, str(c.count), f"{c.rate(now, now - self.started):.1f}", str(size), *forged, last)
             robots = Table(title="robots", title_justify="left")
             for column in ("robot", "status", "answered", "missed", "x mm", "y mm", "heading rad", "chest", "flags"):
                 robots.add_column(column, no_wrap=True)
@@ -212,8 +230,14 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
 def main(argv: list[str]) -> int:
     args = parse_args(argv)
     types = load_types(args.build_dir)
+    secret = os.environ.get("TOUCHLINE_MATCH_SECRET")
     try:
-        spy = Spy(args.lcm_url, types)
+        key = bytes.fromhex(secret) if secret else None
+    except ValueError:
+        print("tools/spy: $TOUCHLINE_MATCH_SECRET is not hex (the match secret the programs take)", file=sys.stderr)
+        return 2
+    try:
+        spy = Spy(args.lcm_url, types, key)
     except Exception as e:  # LCM cannot open the URL
         print(f"tools/spy: cannot open LCM at {args.lcm_url}: {e}", file=sys.stderr)
         return 2
