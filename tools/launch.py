@@ -471,7 +471,8 @@ def main(argv: list[str]) -> int:
     except BadInput as e:
         logger.error(f"launch: {e}")
         return 2
-    if stop.signum is not None:
+    if stop.signum is not None:  # during the checks: nothing was started
+        logger.error(f"launch: interrupted ({signal.Signals(stop.signum).name})")
         return 128 + stop.signum
     return Launcher(args, stop).run()
 
