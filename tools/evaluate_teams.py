@@ -22,6 +22,7 @@ from pathlib import Path
 import sweep
 import sweep_grid
 import sweep_summary
+from touchline_version import add_version_option
 
 ROOT = Path(__file__).resolve().parents[1]
 EXPERIMENTS = {"supporters": ("py:Team", "py:Striker"), "ports": ("py:Team", "cpp:Team")}
@@ -54,6 +55,7 @@ def experiment_result(team0: str, team1: str, rows: list[dict]) -> dict:
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    add_version_option(parser, "tools/evaluate_teams.py")
     parser.add_argument("--matches", type=int, default=20)
     parser.add_argument("--experiments", nargs="+", choices=sorted(EXPERIMENTS), default=sorted(EXPERIMENTS))
     parser.add_argument("--build-dir", type=Path, default=ROOT / "build")

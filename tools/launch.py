@@ -13,6 +13,7 @@ from __future__ import annotations
 import argparse
 import datetime
 import json
+import logging
 import os
 import secrets
 import shutil
@@ -22,9 +23,11 @@ import tempfile
 import time
 from pathlib import Path
 
+from match_checks import BadInput, check_python_skill, check_robot, check_world
 from match_processes import SECRET_ENV, Children
 from match_watch import MatchWatch
 from shim_keeper import ShimKeeper
+from touchline_version import add_version_option
 
 ROOT = Path(__file__).resolve().parents[1]
 DEFAULT_BUILD = ROOT / "build"
@@ -46,9 +49,31 @@ WALK_ENGINES = ("walkcycle", "nao-joints", "runswift")
 FORMATION = [(-0.9, 0.0, 0.0), (-0.6, 0.0, 0.0), (-0.3, 0.4, 0.0), (-0.3, -0.4, 0.0),
              (-0.45, 0.7, 0.0), (-0.45, -0.7, 0.0), (-0.15, 0.0, 0.0)]
 
+# robot_shim's options a user may want in a match, passed to every shim as given (option,
+# argparse keywords). The launcher sets --team, --player, --behaviour, --param, --walk-config,
+# --walk-engine, --field-config, --lcm-url and --data-dir itself (above); --secret-file,
+# --join-timeout and --world-timeout are for shims started by hand
+# (tests/tools/test_launch.py holds the launcher to robot_shim --help with this list).
+SHIM_OPTIONS = [
+    ("--python-dir", dict(type=Path, help="the Python behaviour's folder for py teams (default: robot_shim's, "
+                                          "behaviour_py/)")),
+    ("--kick-config", dict(type=Path, help="kick and dribble parameters file (default: the built-in kick)")),
+    ("--head-config", dict(type=Path, help="head joint limits and speed file (default: the built-in head)")),
+    ("--charge-cpu", dict(action="store_true", help="charge each behaviour tick's CPU time to simulated time")),
+    ("--perfect-localisation", dict(action="store_true", help="every robot's pose from the truth")),
+    ("--tick-timeout-ms", dict(type=int, help="wall time a Python tick() may run before it is interrupted "
+                                               "(robot_shim's default: 10000; 0: never)")),
+    ("--snapshot-every", dict(type=int, help="publish each robot's Blackboard on TL_BLACKBOARD_<team>_<player> every "
+                                              "N ticks (robot_shim's default: 30; 0: never)")),
+    ("--runswift-config", dict(type=Path, help="--walk-engine runswift: one of their option files (their walk keys)")),
+]
+LOG_LEVELS = ("debug", "info", "warning", "error")
+logger = logging.getLogger("launch")
+
 
 def parse_args(argv: list[str]) -> argparse.Namespace:
-    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p = argparse.ArgumentParser(prog="tools/match", description=__doc__.split("\n\n")[0])
+    add_version_option(p, "tools/match")
     p.add_argument("--team-size", type=int, default=4, help="robots per team, 1..7 (default 4)")
     p.add_argument("--duration", type=float, help="stop after this many simulated seconds "
                    "(default: the referee ends the match after two halves)")
@@ -94,8 +119,17 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     p.add_argument("--json", type=Path, help="also write the match summary here as JSON")
     p.add_argument("--log-dir", type=Path, default=ROOT / "logs", help="where match logs go (default logs/)")
     p.add_argument("--no-log", action="store_true", help="do not record an LCM event log")
-    p.add_argument("--no-progress", action="store_true", help="no progress bar (it shows only on a terminal)")
+    p.add_argument("--no-progress", action="store_true", help="no progress bar (it shows only on a terminal) "
+                   "and no progress lines (every 10 %% of the match, when not on a terminal)")
+    p.add_argument("--quiet", action="store_true", help="print only warnings, errors and the summary: no progress, "
+                   "no launcher lines (--log-level warning --no-progress)")
+    p.add_argument("--log-level", choices=LOG_LEVELS, default="info",
+                   help="the launcher's own lines: debug adds each program's command line (default info)")
+    for option, keywords in SHIM_OPTIONS:
+        p.add_argument(option, **keywords)
     args = p.parse_args(argv)
+    if args.quiet:
+        args.no_progress, args.log_level = True, "warning"
     if not 1 <= args.team_size <= 7:
         p.error("--team-size must be 1..7")
     for team in (0, 1):
@@ -108,6 +142,10 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
         p.error("--duration must be > 0")
     if args.robot_timeout_ms is not None and args.robot_timeout_ms <= 0:
         p.error("--robot-timeout-ms must be > 0")
+    for option in ("--tick-timeout-ms", "--snapshot-every"):
+        value = getattr(args, option[2:].replace("-", "_"))
+        if value is not None and value < 0:
+            p.error(f"{option} must be >= 0")
     if args.restart_dead and args.mode == "free":
         p.error("--restart-dead needs lockstep or realtime mode: in free mode the world never marks a "
                 "silent robot inactive, so a restarted shim could not take it over")
@@ -129,6 +167,68 @@ def team_behaviour(spec: str, runswift_dir: Path | None = None) -> list | None:
     if language == "runswift":
         return ["--behaviour", "runswift", "--python-dir", str(runswift_dir), "--param", f"skill={skill}", *params]
     return ["--behaviour", skill, *params]
+
+
+def world_options(a: argparse.Namespace) -> list:
+    """sim_world's options for the match (its --check takes the same)."""
+    return ["--config", a.config, "--set", f"match.team_size={a.team_size}",
+            *(["--duration", a.duration] if a.duration else []),
+            *[arg for item in a.set for arg in ("--set", item)],
+            "--mode", a.mode, "--speed", a.speed, "--seed", a.seed,
+            *(["--robot-timeout-ms", a.robot_timeout_ms] if a.robot_timeout_ms else []),
+            "--lcm-url", a.lcm_url]
+
+
+def robot_behaviour(a: argparse.Namespace, team: int, target: tuple) -> list:
+    """robot_shim's behaviour options for a robot of `team`; `target` (x, y, theta) is its
+    kick-off spot, which the goto behaviour walks to."""
+    spec = getattr(a, f"team{team}")
+    if spec:
+        behaviour = team_behaviour(spec, a.runswift_dir)
+    elif a.behaviour == "goto":
+        x, y, theta = target
+        return ["--behaviour", "goto", "--param", f"x={x:.0f}", "--param", f"y={y:.0f}", "--param", f"theta={theta:.3f}"]
+    else:
+        behaviour = ["--behaviour", "py", "--param", f"skill={a.skill}"]
+    if a.python_dir and behaviour[:2] == ["--behaviour", "py"]:
+        behaviour += ["--python-dir", a.python_dir]
+    return behaviour
+
+
+def shim_command(a: argparse.Namespace, bin_shim: Path, team: int, player: int, behaviour: list) -> list:
+    """One robot_shim's command line in the match."""
+    engine = getattr(a, f"walk_engine{team}") or a.walk_engine
+    passed = []
+    for option, keywords in SHIM_OPTIONS:
+        if option == "--python-dir":
+            continue  # for the Python behaviour only (robot_behaviour)
+        value = getattr(a, option[2:].replace("-", "_"))
+        if keywords.get("action") == "store_true":
+            passed += [option] if value else []
+        elif value is not None:
+            passed += [option, value]
+    return [bin_shim, "--team", team, "--player", player, "--walk-config", a.walk_config, "--walk-engine", engine,
+            "--field-config", a.config, "--lcm-url", a.lcm_url, *(["--data-dir", a.data_dir] if a.data_dir else []),
+            *passed, *behaviour]
+
+
+def preflight(a: argparse.Namespace):
+    """Checks every input before anything starts (match_checks.py); the match's plan (its
+    planned length), or BadInput with one line."""
+    bin_world, bin_shim = a.build_dir / "bin" / "sim_world", a.build_dir / "bin" / "robot_shim"
+    for b in (bin_world, bin_shim):
+        if not b.exists():
+            raise BadInput(f"{b} not found; build first (tools/setup)")
+    plan = check_world(bin_world, world_options(a))
+    for team in (0, 1):
+        spec = getattr(a, f"team{team}")
+        what = f"--team{team} {spec}" if spec else f"--skill {a.skill}" if a.behaviour == "py" else "--behaviour goto"
+        behaviour = robot_behaviour(a, team, (0.0, 0.0, 0.0))
+        if behaviour[:2] == ["--behaviour", "py"]:  # the skill is made when the robot first ticks: check it now
+            skill = behaviour[behaviour.index("--param") + 1].partition("=")[2]
+            check_python_skill(what, skill, a.python_dir or ROOT / "behaviour_py")
+        check_robot(bin_shim, what, shim_command(a, bin_shim, team, 1, behaviour)[1:])
+    return plan
 
 
 def kickoff_targets(match) -> list:
@@ -173,7 +273,7 @@ class Launcher:
         bin_shim = a.build_dir / "bin" / "robot_shim"
         for b in (bin_world, bin_shim):
             if not b.exists():
-                print(f"launch: {b} not found; build first (tools/setup)", file=sys.stderr)
+                logger.error(f"launch: {b} not found; build first (tools/setup)")
                 return 2
         sys.path.insert(0, str(a.build_dir / "lcm_types" / "gen" / "python"))
         log = None
@@ -181,7 +281,7 @@ class Launcher:
             stamp = datetime.datetime.now().strftime("%Y-%m-%d_%H%M%S")
             log = a.log_dir / f"{stamp}_seed{a.seed}.lcmlog"
             log.parent.mkdir(parents=True, exist_ok=True)
-        watch = MatchWatch(a.lcm_url, show_bar=sys.stdout.isatty() and not a.no_progress, team_size=a.team_size)
+        watch = MatchWatch(a.lcm_url, progress=progress_kind(a), team_size=a.team_size, plan=getattr(a, "plan", None))
         keeper = ShimKeeper(self.children, watch, restart=a.restart_dead)
         try:
             rc = self.play(bin_world, bin_shim, watch, keeper, log)
@@ -189,7 +289,7 @@ class Launcher:
             watch.stop()
             self.children.stop_all()
         if log and log.exists():
-            print(f"launch: match log {log} ({log.stat().st_size / 1e6:.1f} MB)")
+            logger.info(f"launch: match log {log} ({log.stat().st_size / 1e6:.1f} MB)")
         if rc == 0:  # the processes' own logs are kept only to explain a failure
             shutil.rmtree(self.logdir, ignore_errors=True)
         return rc
@@ -197,21 +297,14 @@ class Launcher:
     def interrupted(self) -> int | None:
         if self.stop.signum is None:
             return None
-        print(f"launch: interrupted ({signal.Signals(self.stop.signum).name}), stopping every process",
-              file=sys.stderr, flush=True)
+        logger.error(f"launch: interrupted ({signal.Signals(self.stop.signum).name}), stopping every process")
         return 128 + self.stop.signum
 
     def play(self, bin_world: Path, bin_shim: Path, watch: MatchWatch, keeper: ShimKeeper, log: Path | None) -> int:
         a = self.args
         summary_path = self.logdir / "summary.json"
-        world = self.children.start("sim_world", [
-            bin_world, "--config", a.config, "--set", f"match.team_size={a.team_size}",
-            *(["--duration", a.duration] if a.duration else []),
-            *[arg for item in a.set for arg in ("--set", item)],
-            "--mode", a.mode, "--speed", a.speed, "--seed", a.seed,
-            *(["--robot-timeout-ms", a.robot_timeout_ms] if a.robot_timeout_ms else []),
-            "--lcm-url", a.lcm_url, "--summary", summary_path, "--quiet",
-            *(["--log", log] if log else [])])
+        world = self.children.start("sim_world", [bin_world, *world_options(a), "--summary", summary_path, "--quiet",
+                                                  *(["--log", log] if log else [])])
         # The robots are placed on the field the world plays on (its config after every
         # --set), which only the world knows: it says so on TL_MATCH as it starts.
         if (rc := self.wait_for_match(world, watch)) is not None:
@@ -219,25 +312,13 @@ class Launcher:
         match = watch.match
         targets = kickoff_targets(match)
         for team, player, x, y, theta in targets:
-            spec = getattr(a, f"team{team}")
-            if spec:
-                behaviour = team_behaviour(spec, a.runswift_dir)
-            elif a.behaviour == "goto":
-                behaviour = ["--behaviour", "goto", "--param", f"x={x:.0f}", "--param", f"y={y:.0f}",
-                             "--param", f"theta={theta:.3f}"]
-            else:
-                behaviour = ["--behaviour", "py", "--param", f"skill={a.skill}"]
-            engine = getattr(a, f"walk_engine{team}") or a.walk_engine
-            keeper.start(team, player, [bin_shim, "--team", team, "--player", player, "--walk-config", a.walk_config,
-                                        "--walk-engine", engine,
-                                        "--field-config", a.config, "--lcm-url", a.lcm_url,
-                                        *(["--data-dir", a.data_dir] if a.data_dir else []), *behaviour])
+            keeper.start(team, player, shim_command(a, bin_shim, team, player, robot_behaviour(a, team, (x, y, theta))))
         length = f"{a.duration:.0f} s simulated" if a.duration else "two halves"
         what = a.skill if a.behaviour == "py" else "goto kick-off spots"
         if a.team0 or a.team1:
             what = f"{a.team0 or what} v {a.team1 or what}"
-        print(f"launch: {2 * match.team_size} robots ({what}), {length}, {a.mode} mode, seed {a.seed}, "
-              f"field {match.field_length_mm:.0f} x {match.field_width_mm:.0f} mm", flush=True)
+        logger.info(f"launch: {2 * match.team_size} robots ({what}), {length}, {a.mode} mode, seed {a.seed}, "
+              f"field {match.field_length_mm:.0f} x {match.field_width_mm:.0f} mm")
         announced = False
         while world.poll() is None:
             if watch.kicked_off and not announced:  # from here on a dying shim no longer stops the match
@@ -246,23 +327,23 @@ class Launcher:
             if (rc := self.interrupted()) is not None:
                 return rc
             if watch.error:
-                print(f"launch: stopping the match: the match watcher failed: {watch.error} "
-                      f"(logs in {self.logdir})", file=sys.stderr)
+                logger.error(f"launch: stopping the match: the match watcher failed: {watch.error} "
+                             f"(logs in {self.logdir})")
                 return EXIT_FAILED
             why = keeper.check(kicked_off=announced)
             if why:
-                print(f"launch: stopping the match: {why}", file=sys.stderr)
+                logger.error(f"launch: stopping the match: {why}")
                 return EXIT_FAILED
             time.sleep(0.1)  # polling child exit codes, not hiding a race
         if world.poll() != 0:
-            print(f"launch: stopping the match: sim_world {world.why()} (logs in {self.logdir})", file=sys.stderr)
+            logger.error(f"launch: stopping the match: sim_world {world.why()} (logs in {self.logdir})")
             return EXIT_FAILED
         keeper.after_match(SHIMS_EXIT_S, lambda: self.stop.signum is not None)  # they end on FINISHED
         watch.stop()  # the bar ends before the summary starts
         if (rc := self.interrupted()) is not None:
             return rc
         if not summary_path.exists():
-            print(f"launch: sim_world wrote no summary (logs in {self.logdir})", file=sys.stderr)
+            logger.error(f"launch: sim_world wrote no summary (logs in {self.logdir})")
             return EXIT_FAILED
         summary = json.loads(summary_path.read_text())  # the world's own word, score included: the bus may lie
         summary["events"] = [{"sim_s": t, "what": line} for t, line in sorted(watch.events + keeper.lines())]
@@ -295,13 +376,13 @@ class Launcher:
             if (rc := self.interrupted()) is not None:
                 return rc
             if world.poll() is not None:
-                print(f"launch: stopping the match: sim_world {world.why()} (logs in {self.logdir})", file=sys.stderr)
+                logger.error(f"launch: stopping the match: sim_world {world.why()} (logs in {self.logdir})")
                 return EXIT_FAILED
             if watch.error or time.monotonic() > deadline:
                 why = watch.error or (f"sim_world published no usable TL_MATCH (the match's set-up) within "
                                       f"{MATCH_CONFIG_WAIT_S} s" + (f" (last refused: {watch.last_malformed})"
                                                                      if watch.malformed["TL_MATCH"] else ""))
-                print(f"launch: stopping the match: {why} (logs in {self.logdir})", file=sys.stderr)
+                logger.error(f"launch: stopping the match: {why} (logs in {self.logdir})")
                 return EXIT_FAILED
             time.sleep(0.02)  # polling the watcher's thread, not hiding a race
         return None
@@ -356,15 +437,48 @@ def clock(sim_s: float) -> str:
     return f"{int(sim_s // 60)}:{int(sim_s % 60):02d}"
 
 
+class LineHandler(logging.Handler):
+    """The launcher's lines: info and debug to stdout, warnings and errors to stderr, each
+    stream looked up per line, so that while a progress bar owns the terminal (and has taken
+    both streams) the lines print above it."""
+
+    def emit(self, record: logging.LogRecord) -> None:
+        stream = sys.stderr if record.levelno >= logging.WARNING else sys.stdout
+        stream.write(self.format(record) + "\n")
+        stream.flush()
+
+
+def setup_logging(level: str) -> None:
+    logger.handlers[:] = [LineHandler()]
+    logger.setLevel(level.upper())
+    logger.propagate = False
+
+
+def progress_kind(a: argparse.Namespace) -> str:
+    """'bar' on a terminal, 'lines' (one every 10 % of the match) otherwise, or 'none'."""
+    if a.no_progress:
+        return "none"
+    return "bar" if sys.stdout.isatty() else "lines"
+
+
 def main(argv: list[str]) -> int:
     stop = StopSignal()  # first: a Ctrl-C from here on gives one line, never a traceback
     args = parse_args(argv)
+    setup_logging(args.log_level)
     if not args.host_network and os.environ.get("TOUCHLINE_IN_NETNS") != "1":
         # exec, not a child: tools/netns execs the launcher again in the namespace, so this
         # process stays the launcher and a signal sent to it (or to tools/match, which execs
         # this) stops the match instead of orphaning it.
         netns = ROOT / "tools" / "netns"
         os.execv(netns, [str(netns), sys.executable, __file__, *argv])
+    try:  # in the namespace: the checks open the match's bus as the programs will
+        args.plan = preflight(args)
+    except BadInput as e:
+        logger.error(f"launch: {e}")
+        return 2
+    if stop.signum is not None:  # during the checks: nothing was started
+        logger.error(f"launch: interrupted ({signal.Signals(stop.signum).name})")
+        return 128 + stop.signum
     return Launcher(args, stop).run()
 
 

@@ -7,6 +7,7 @@ if the launcher dies (even by SIGKILL), so no child outlives it.
 """
 from __future__ import annotations
 
+import logging
 import shutil
 import signal
 import subprocess
@@ -67,6 +68,8 @@ class Children:
     def start(self, name: str, argv: list, log_name: str | None = None) -> Child:
         log = self.logdir / ((log_name or name).replace(" ", "_").replace("/", "-") + ".log")
         child = Child(name, argv, log, self.env)
+        logging.getLogger("launch").debug(f"launch: started {name} (pid {child.pid}, log {log}): "
+                                          + " ".join(child.argv))
         self.all.append(child)
         return child
 

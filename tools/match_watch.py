@@ -1,6 +1,7 @@
 """Follows a running match over LCM for the launcher: the match's own set-up and geometry
 (TL_MATCH, which the launcher places the robots by), simulated time, real-time factor, score
-and robot status, shown as a progress bar (tqdm) and kept for the summary.
+and robot status, shown as progress (match_progress.py: a bar on a terminal, plain lines
+elsewhere) and kept for the summary.
 
 Anyone on the bus can publish on the channels watched here, so every message is decoded
 with the generated types and checked before it is used; one that fails is counted per
@@ -9,6 +10,7 @@ channel and skipped. Anything else that goes wrong in the watching thread is kep
 """
 from __future__ import annotations
 
+import logging
 import math
 import select
 import sys
@@ -30,7 +32,10 @@ def require(ok: bool, what: str) -> None:
 
 
 class MatchWatch:
-    def __init__(self, lcm_url: str, show_bar: bool, team_size: int = MAX_TEAM_SIZE):
+    def __init__(self, lcm_url: str, show_bar: bool = False, team_size: int = MAX_TEAM_SIZE, plan=None,
+                 progress: str | None = None, console=None):
+        """progress: 'bar', 'lines' or 'none' (show_bar: 'bar' or 'none'); plan: the match's
+        planned length (match_checks.MatchPlan), else TL_MATCH's duration_s is the total."""
         import lcm
         from touchline import game_state_t, match_config_t, match_event_t, robot_status_t
 
@@ -55,8 +60,9 @@ class MatchWatch:
         self.match = None  # the first valid match_config_t: the match as the world plays it
         self._start = time.monotonic()
         self._stop = threading.Event()
-        self._show_bar = show_bar
-        self._bar = None  # made when TL_MATCH says how long the match may last
+        self._progress_kind = progress or ("bar" if show_bar else "none")
+        self._plan, self._console = plan, console
+        self.progress = None  # a MatchProgress, made when TL_MATCH says how long the match may last
         self._thread = threading.Thread(target=self._run, name="match watch", daemon=True)
         self._thread.start()
 
@@ -120,9 +126,11 @@ class MatchWatch:
         if msg is None or self.match is not None:  # the world repeats it unchanged
             return
         self._team_size = msg.team_size
-        if self._show_bar:
-            from tqdm import tqdm
-            self._bar = tqdm(total=round(msg.duration_s), unit="sim s", dynamic_ncols=True, leave=True)
+        if self._progress_kind != "none":
+            from match_progress import MatchProgress
+            plan = self._plan
+            self.progress = MatchProgress(self._progress_kind, plan.planned_s if plan else msg.duration_s,
+                                          plan.goal_stoppage_s if plan else 0.0, msg.duration_s, self._console)
         self.match = msg  # last: the launcher reads it from another thread
 
     def _on_game(self, channel: str, data: bytes) -> None:
@@ -132,9 +140,8 @@ class MatchWatch:
         self._advance(msg.utime)
         self.kicked_off = True
         self.score = tuple(msg.score)
-        if self._bar is not None:
-            self._bar.n = min(self._bar.total, round(self.sim_s))
-            self._bar.set_postfix_str(f"x{self.real_time_factor():.1f} {self.state} score {self.score[0]}:{self.score[1]}")
+        if self.progress is not None:
+            self.progress.update(self.sim_s, self.state, self.score)
 
     def _on_status(self, channel: str, data: bytes) -> None:
         msg = self._decode(channel, data, self._status_t, self._check_status)
@@ -155,6 +162,8 @@ class MatchWatch:
         self.match_events.append(msg)
         if msg.kind == msg.STATE_CHANGE:
             self.state = msg.text
+        if msg.kind == msg.GOAL and self.progress is not None:
+            self.progress.goal()
 
     def timed_out(self, team: int, player: int) -> bool:
         """Whether the world last said this robot is inactive (timed out), so that a
@@ -163,12 +172,10 @@ class MatchWatch:
         return msg is not None and msg.state == msg.TIMED_OUT
 
     def say(self, line: str, file=None) -> None:
-        """Prints a line during the match, above the progress bar if there is one."""
-        file = file or sys.stdout
-        if self._bar is not None:
-            self._bar.write(line, file=file)
-        else:
-            print(line, file=file, flush=True)
+        """A line of the launcher's during the match (above the progress bar, if there is one):
+        a warning for stderr, else information (--quiet and --log-level govern both)."""
+        logger = logging.getLogger("launch")
+        logger.warning(line) if file is sys.stderr else logger.info(line)
 
     def malformed_total(self) -> int:
         return sum(self.malformed.values())
@@ -179,5 +186,5 @@ class MatchWatch:
     def stop(self) -> None:
         self._stop.set()
         self._thread.join(timeout=2)
-        if self._bar is not None:
-            self._bar.close()
+        if self.progress is not None:
+            self.progress.close()

@@ -24,6 +24,8 @@ import sys
 import tempfile
 from pathlib import Path
 
+from touchline_version import add_version_option
+
 ROOT = Path(__file__).resolve().parents[1]
 LCM_URL = "udpm://239.255.76.67:7667?ttl=0"
 
@@ -77,6 +79,7 @@ def run_scenario(build: Path, data_dir: Path, params: dict, ball: tuple, seconds
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    add_version_option(parser, "tools/record_corpus.py")
     parser.add_argument("--build-dir", type=Path, default=ROOT / "build")
     parser.add_argument("--out", type=Path, default=ROOT / "tests" / "data" / "port_corpus.lcmlog")
     parser.add_argument("--data-dir", type=Path, default=ROOT / "config",

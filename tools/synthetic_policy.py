@@ -18,6 +18,7 @@ import sys
 from pathlib import Path
 
 sys.path.append(str(Path(__file__).resolve().parents[1] / "behaviour_py"))
+from touchline_version import add_version_option  # noqa: E402
 from skills.tile_policy import policyText, wrapAngle as wrap  # noqa: E402 (the format's one writer, the one wrap)
 
 TILINGS = 4
@@ -79,6 +80,7 @@ def write_policy(path: Path) -> None:
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    add_version_option(parser, "tools/synthetic_policy.py")
     parser.add_argument("out", type=Path, help="the policy file to write (e.g. DATA_DIR/policies/go_to_pose.policy)")
     write_policy(parser.parse_args().out)
     return 0

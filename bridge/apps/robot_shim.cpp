@@ -24,6 +24,7 @@
 #include "touchline/python/tick_guard.hpp"
 #include "touchline/robot/walk_engines.hpp"
 #include "touchline/robot_api/data.hpp"
+#include "touchline/version.hpp"
 
 namespace po = boost::program_options;
 using namespace touchline;
@@ -139,6 +140,7 @@ int main(int argc, char** argv) {
       "Usage: robot_shim --team T --player N [options]\nOptions");
   options.add_options()
     ("help,h", "print this help and exit")
+    ("version", kVersionHelp)
     ("team", number_option("--team", &def.id.team, 0, 1, /*show_default=*/false)->required(), "team index, 0 or 1")
     ("player", number_option("--player", &def.id.player, 1, kMaxTeamSize, /*show_default=*/false)->required(),
      "player number, 1..7 (and within the world's team size)")
@@ -176,7 +178,10 @@ int main(int argc, char** argv) {
      "Python behaviour: wall time one tick() (with a reload's import) may run, 0..3600000 ms, before it is "
      "interrupted; 0: never (e.g. to debug it with pdb)")
     ("snapshot-every", number_option("--snapshot-every", &node.snapshot_every, 0, 1000000),
-     "publish the Blackboard (as the behaviour saw it) on TL_BLACKBOARD_<team>_<player> every N behaviour ticks; 0: never");
+     "publish the Blackboard (as the behaviour saw it) on TL_BLACKBOARD_<team>_<player> every N behaviour ticks; 0: never")
+    ("check", "check the options, the config files and the behaviour as for a match and exit (0, or 2 with the "
+     "one-line error) without joining one: a C++ behaviour is made with its --param values; for Python only "
+     "--python-dir is checked (its module is imported, and its skill read, when the robot plays)");
 
   std::optional<pybind11::scoped_interpreter> interpreter; // only for py; outlives the behaviour
   std::unique_ptr<api::Behaviour> behaviour;
@@ -187,6 +192,7 @@ int main(int argc, char** argv) {
       std::cout << options << "\n" << behaviour_list();
       return 0;
     }
+    if (version_requested(vm, "robot_shim")) return 0;
     po::notify(vm);
     node.key = transport::load_match_key(secret_file);
     def.behaviour.params = parse_params(param_args);
@@ -206,6 +212,12 @@ int main(int argc, char** argv) {
     if (const auto problem = transport::lcm_url_problem(node.lcm_url))
       throw ConfigError("--lcm-url '" + node.lcm_url + "': cannot open LCM: " + *problem);
     api::set_data_dir(data_dir); // before the behaviour is made: it may load its data
+    if (vm.count("check")) {
+      if (!robot::python_module(def.behaviour)) apps::make_behaviour(def, {});
+      else if (!std::filesystem::is_directory(def.behaviour.python_dir))
+        throw po::error("--python-dir " + def.behaviour.python_dir + " is not a directory");
+      return 0;
+    }
     // From here on a stop signal must reach Python: a module may hang at import.
     handle_stop_signals(def.id.team, def.id.player);
     python::PythonBehaviourDef python;

@@ -1,5 +1,6 @@
 // sim_world: plays a match in the Box2D world with robot_shim processes over LCM.
 // Thin program: options -> WorldConfig + WorldNodeDef -> run_world -> summary.
+#include <algorithm>
 #include <csignal>
 #include <fstream>
 #include <iomanip>
@@ -12,6 +13,7 @@
 #include "touchline/lcm/lcm_url.hpp"
 #include "touchline/lcm/world_node.hpp"
 #include "touchline/sim/config.hpp"
+#include "touchline/version.hpp"
 
 namespace po = boost::program_options;
 using namespace touchline;
@@ -101,6 +103,15 @@ void print_summary(const sim::Match& match, const transport::RunSummary& s) {
   if (s.resent_senses) std::cout << "  senses sent again to late robots: " << s.resent_senses << "\n";
 }
 
+/// --check's one line: how long the match is planned to last, for a launcher's progress bar.
+void print_plan(const sim::WorldConfig& config) {
+  const double duration_s = config.match.duration_s;
+  const double planned_s = std::min(duration_s, sim::planned_length_s(config.rules));
+  std::cout << std::setprecision(9) << "{\"planned_s\": " << planned_s
+            << ", \"goal_stoppage_s\": " << sim::goal_stoppage_s(config.rules) << ", \"duration_s\": " << duration_s
+            << ", \"team_size\": " << config.match.team_size << "}\n";
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -117,6 +128,7 @@ int main(int argc, char** argv) {
       "Usage: sim_world [options]\nOptions");
   options.add_options()
     ("help,h", "print this help and exit")
+    ("version", kVersionHelp)
     ("config", po::value(&config_path), "world config file ([field], [physics], [match]); default: the built-in SPL 2011 values")
     ("set", po::value(&overrides)->composing(), "override one config value, section.key=value (repeatable)")
     ("robots", number_option("--robots", &robots, 1, 2 * kMaxTeamSize, /*show_default=*/false),
@@ -144,7 +156,10 @@ int main(int argc, char** argv) {
     ("gamecontroller", po::value(&gamecontroller),
      "take the game from the official SPL GameController's UDP packets (versions 15 and 18) on [ADDRESS:]PORT, e.g. 127.0.0.1:3838, instead of the built-in referee")
     ("log", po::value(&node.log_path), "record every message of the match to this LCM event log (lcm-logger format; timestamps are simulated time; checked writable at start)")
-    ("quiet", "no progress lines");
+    ("quiet", "no progress lines")
+    ("check", "check the options and the config (with every --set) as for a match, print the match's planned "
+     "length as one JSON line ({\"planned_s\", \"goal_stoppage_s\", \"duration_s\", \"team_size\"}) and exit: "
+     "0, or 2 with the one-line error");
 
   sim::WorldConfig config;
   try {
@@ -154,6 +169,7 @@ int main(int argc, char** argv) {
       std::cout << options << "\n";
       return 0;
     }
+    if (version_requested(vm, "sim_world")) return 0;
     po::notify(vm);
     node.pacing = parse_mode(mode);
     node.key = transport::load_match_key(secret_file);
@@ -172,6 +188,10 @@ int main(int argc, char** argv) {
     if (!node.log_path.empty()) require_writable("--log", node.log_path);
     if (const auto problem = transport::lcm_url_problem(node.lcm_url))
       throw ConfigError("--lcm-url '" + node.lcm_url + "': cannot open LCM: " + *problem);
+    if (vm.count("check")) {
+      print_plan(config);
+      return 0;
+    }
   } catch (const po::error& e) {
     std::cerr << "sim_world: " << e.what() << " (see --help)\n";
     return kUsageError;

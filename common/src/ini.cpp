@@ -1,10 +1,12 @@
 #include "touchline/ini.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
 #include <sstream>
 #include <system_error>
+#include <vector>
 
 #include <sys/stat.h>
 
@@ -13,12 +15,34 @@ namespace po = boost::program_options;
 namespace touchline {
 
 namespace {
+/// What would be right instead of an unknown "section.key": " (the keys of [section]: a, b)",
+/// or " (the sections: field, physics)" when the section is unknown too.
+std::string known_keys(const po::options_description& options, const std::string& unknown) {
+  const std::string section = unknown.substr(0, unknown.find('.'));
+  std::vector<std::string> keys, sections;
+  for (const auto& option : options.options()) {
+    const std::string& name = option->long_name();
+    const std::string of = name.substr(0, name.find('.'));
+    if (of == section) keys.push_back(name.substr(of.size() + 1));
+    if (std::find(sections.begin(), sections.end(), of) == sections.end()) sections.push_back(of);
+  }
+  const auto join = [](const std::vector<std::string>& names) {
+    std::string text;
+    for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+    return text;
+  };
+  return keys.empty() ? " (the sections: " + join(sections) + ")"
+                      : " (the keys of [" + section + "]: " + join(keys) + ")";
+}
+
 void store_stream(const po::options_description& options, std::istream& in, const std::string& origin,
                   bool ignore_unknown = false) {
   try {
     po::variables_map vm;
     po::store(po::parse_config_file(in, options, ignore_unknown), vm);
     po::notify(vm);
+  } catch (const po::unknown_option& e) {
+    throw ConfigError(origin + ": " + e.what() + known_keys(options, e.get_option_name()));
   } catch (const po::error& e) {
     throw ConfigError(origin + ": " + e.what());
   }

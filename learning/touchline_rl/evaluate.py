@@ -23,6 +23,7 @@ MAX_FRAMES = 1200  # 40 s
 
 def parse(argv):
     parser = argparse.ArgumentParser(prog="learning/evaluate", description=__doc__.splitlines()[0])
+    parser.add_argument("--version", action="version", version=f"learning/evaluate {(REPO / 'VERSION').read_text().strip()}")
     parser.add_argument("--policy", type=pathlib.Path, default=REPO / "config" / "policies" / "go_to_pose.policy")
     parser.add_argument("--starts", type=int, default=200)
     parser.add_argument("--out", type=pathlib.Path, default=REPO / "docs" / "learning" / "evaluation")

@@ -24,6 +24,7 @@ CHECK_SEED = 7      # a start set apart from the evaluation's
 
 def parse(argv):
     parser = argparse.ArgumentParser(prog="learning/train_tiles", description=__doc__.splitlines()[0])
+    parser.add_argument("--version", action="version", version=f"learning/train_tiles {(REPO / 'VERSION').read_text().strip()}")
     parser.add_argument("--episodes", type=int, default=TrainingDef.episodes)
     parser.add_argument("--seed", type=int, default=TrainingDef.seed)
     parser.add_argument("--report-every", type=int, default=2000, help="episodes between curve points")

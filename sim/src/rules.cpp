@@ -1,5 +1,6 @@
 #include "touchline/sim/rules.hpp"
 
+#include <limits>
 #include <sstream>
 #include <string>
 
@@ -54,5 +55,12 @@ void validate(const RulesDef& d) {
   require_positive("rules.game_stuck_radius_mm", d.game_stuck_radius_mm);
   require_fraction("rules.fall_probability", d.fall_probability);
 }
+
+double planned_length_s(const RulesDef& d) {
+  if (!d.referee) return std::numeric_limits<double>::infinity();
+  return 2.0 * (double{d.initial_s} + d.standby_s + d.ready_s + d.set_s + d.half_s);
+}
+
+double goal_stoppage_s(const RulesDef& d) { return d.referee ? double{d.ready_s} + d.set_s : 0.0; }
 
 } // namespace touchline::sim

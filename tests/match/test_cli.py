@@ -1,6 +1,7 @@
 """Bad input to either program: one clear line on stderr and exit code 2, at once (no core
 dump, no hang, nothing learned only after a match). Runs in a private network namespace
 (tools/netns), so the LCM URLs tried here reach nothing but this namespace's loopback."""
+import json
 import shutil
 import subprocess
 
@@ -133,3 +134,24 @@ def test_shipped_configs_load(tmp_path):
         result = run(SIM_WORLD, "--config", ROOT / "config" / config, "--robots", "1", "--join-timeout", "0.01",
                      "--lcm-url", "memq://")
         assert result.returncode == 1 and "only 0 of 1 robots joined" in result.stderr, result.stderr
+
+
+def test_check_modes_judge_a_match_without_playing_it():
+    # sim_world --check: the world's config with every --set, its planned length, nothing waited for.
+    result = run(SIM_WORLD, "--check", "--config", ROOT / "config" / "spl2020.ini", "--set", "rules.half_s=300",
+                 "--set", "rules.standby_s=10")
+    assert result.returncode == 0, result.stderr
+    assert json.loads(result.stdout) == {"planned_s": 722, "goal_stoppage_s": 50, "duration_s": 1800, "team_size": 5}
+    assert json.loads(run(SIM_WORLD, "--check", "--duration", 60).stdout)["planned_s"] == 60
+    assert json.loads(run(SIM_WORLD, "--check", "--set", "rules.referee=false").stdout)["planned_s"] == 1800
+    expect_usage_error(run(SIM_WORLD, "--check", "--set", "rules.nosuch=1"),
+                       "unrecognised option 'rules.nosuch' (the keys of [rules]: referee,")
+    # robot_shim --check: options, config files and a C++ behaviour with its parameters.
+    assert run(ROBOT_SHIM, *SHIM, "--check", "--behaviour", "Team", "--param", "walker=learned").returncode == 0
+    assert run(ROBOT_SHIM, *SHIM, "--check", "--behaviour", "py").stdout == ""
+    expect_usage_error(run(ROBOT_SHIM, *SHIM, "--check", "--behaviour", "Team", "--param", "speed=fast"),
+                       "Team: unknown parameter 'speed'")
+    expect_usage_error(run(ROBOT_SHIM, *SHIM, "--check", "--behaviour", "nope"),
+                       "unknown behaviour 'nope' (known: stand, walk, goto,")
+    expect_usage_error(run(ROBOT_SHIM, *SHIM, "--check", "--behaviour", "py", "--python-dir", "/nonexistent"),
+                       "--python-dir /nonexistent is not a directory")

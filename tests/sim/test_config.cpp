@@ -131,6 +131,17 @@ TEST(Config, UnknownKeyIsAnErrorNamingIt) {
   EXPECT_NE(in_file.find("ball_bounciness"), std::string::npos) << in_file;
 }
 
+TEST(Config, UnknownKeyNamesWhatWouldBeRight) {
+  // The section's own keys for a misspelt key; the sections for a misspelt section.
+  const std::string key = config_error([] { load_world_config("", {"field.lenght_mm=9000"}); });
+  EXPECT_NE(key.find("(the keys of [field]: length_mm, width_mm,"), std::string::npos) << key;
+  EXPECT_EQ(key.find("ball_diameter_mm"), std::string::npos) << key;
+  const std::string section = config_error([] { load_world_config("", {"feild.length_mm=9000"}); });
+  EXPECT_NE(section.find("(the sections: field, physics, match, camera, noise, sonar, rules, comm)"),
+            std::string::npos)
+      << section;
+}
+
 TEST(Config, MissingFileIsAnError) {
   const std::string message = config_error([] { load_world_config(kConfigDir + "no_such.ini"); });
   EXPECT_EQ(message, kConfigDir + "no_such.ini: cannot open config file (No such file or directory)");

@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -102,6 +101,18 @@ TEST(Rules, BadValuesNameTheKey) {
   r.getup_s = INFINITY; // set in code, past the file reader: validate refuses it all the same
   EXPECT_EQ(validation_error(r), "rules.getup_s must be in [0, 1000000] (got inf)");
   EXPECT_EQ(validation_error(RulesDef{}), "");
+}
+
+TEST(Rules, PlannedLengthIsTwoHalvesWithTheirStates) {
+  RulesDef r; // SPL 2011: 1 s INITIAL, 45 s READY, 5 s SET, 600 s PLAYING, twice
+  EXPECT_DOUBLE_EQ(planned_length_s(r), 1302.0);
+  EXPECT_DOUBLE_EQ(goal_stoppage_s(r), 50.0);
+  r.standby_s = 10;
+  r.half_s = 300;
+  EXPECT_DOUBLE_EQ(planned_length_s(r), 722.0);
+  r.referee = false; // the game stays PLAYING: only the world's duration ends it
+  EXPECT_TRUE(std::isinf(planned_length_s(r)));
+  EXPECT_DOUBLE_EQ(goal_stoppage_s(r), 0.0);
 }
 
 } // namespace

@@ -38,6 +38,8 @@ def parse_args(argv) -> argparse.Namespace:
     source = p.add_mutually_exclusive_group()
     source.add_argument("--log", type=Path, metavar="FILE", help="replay this lcm-logger log instead of watching live")
     source.add_argument("--lcm-url", metavar="URL", help="LCM URL to watch (default udpm://239.255.76.67:7667?ttl=0)")
+    p.add_argument("--version", action="version", help="print the program's name and version and exit",
+                   version=f"{PROG} {(Path(__file__).resolve().parents[2] / 'VERSION').read_text().strip()}")
     p.add_argument("--port", type=port_number, default=DEFAULT_PORT,
                    help=f"port on 127.0.0.1 (default {DEFAULT_PORT}; 0 picks a free one)")
     return p.parse_args(argv)

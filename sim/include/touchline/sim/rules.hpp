@@ -63,4 +63,14 @@ void bind(IniSchema& schema, RulesDef& def);
 /// >= 0). Throws ConfigError naming the key, e.g. "rules.ready_s must be >= 0 (got -1)".
 void validate(const RulesDef& def);
 
+/// The simulated seconds a match under these rules lasts if nobody scores: two halves, each
+/// INITIAL, STANDBY, READY, SET and its PLAYING time (the second half's INITIAL is the
+/// half-time break). A tool's progress bar takes it as the match's length. Without a
+/// referee the game never ends by itself: infinity (the world's duration_s ends it).
+double planned_length_s(const RulesDef& def);
+
+/// The simulated seconds each goal adds to planned_length_s: READY and SET again before the
+/// kick-off (the clock stops outside PLAYING).
+double goal_stoppage_s(const RulesDef& def);
+
 } // namespace touchline::sim
