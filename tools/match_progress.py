@@ -81,7 +81,7 @@ class MatchProgress:
                 "rtf": f"x{rtf:.1f}" if math.isfinite(rtf) else "x?", "eta": f"ETA {clock(self.eta_s())}"}
 
     def goal(self) -> None:
-        """A goal: READY and SET again before the kick-off."""
+        """A goal or a stuck game: READY and SET again before the kick-off."""
         self.total = min(self._duration_s, self.total + self._goal_stoppage_s)
 
     def update(self, sim_s: float, state: str, score: tuple, wall: float | None = None) -> None:

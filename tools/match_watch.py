@@ -162,8 +162,8 @@ class MatchWatch:
         self.match_events.append(msg)
         if msg.kind == msg.STATE_CHANGE:
             self.state = msg.text
-        if msg.kind == msg.GOAL and self.progress is not None:
-            self.progress.goal()
+        if msg.kind in (msg.GOAL, msg.GAME_STUCK) and self.progress is not None:
+            self.progress.goal()  # both restart with READY and SET
 
     def timed_out(self, team: int, player: int) -> bool:
         """Whether the world last said this robot is inactive (timed out), so that a

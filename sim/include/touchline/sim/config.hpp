@@ -15,7 +15,7 @@ namespace touchline::sim {
 
 struct MatchDef {
   int team_size = 4;          ///< robots per team, 1..kMaxTeamSize
-  float duration_s = 1800.f;  ///< longest the match may last, s: the referee ends it sooner (two halves)
+  float duration_s = 3600.f;  ///< longest the match may last, s: the referee ends it sooner (two halves and their stoppages)
   float foot_separation_mm = 100.f; ///< feet apart when robots are placed (match the walk's)
   float ball_start_x_mm = 0.f;  ///< where the ball is placed at kick-off (field frame)
   float ball_start_y_mm = 0.f;
