@@ -17,9 +17,11 @@ import os
 import secrets
 import shutil
 import signal
+import subprocess
 import sys
 import tempfile
 import time
+import types
 from pathlib import Path
 
 from match_processes import SECRET_ENV, Children
@@ -75,6 +77,10 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     p.add_argument("--data-dir", type=Path, help="the robots' data directory (learned policies; default: "
                    "robot_shim's, the source tree's config/)")
     p.add_argument("--mode", choices=["lockstep", "realtime", "free"], default="lockstep")
+    p.add_argument("--in-process", action="store_true",
+                   help="play the world and every robot in one process (build/bin/touchline_match), as fast as "
+                        "one core allows: the same match as lockstep (same seed, same truth hash) without LCM, "
+                        "so no network namespace, bus, log or progress bar")
     p.add_argument("--speed", type=float, default=1.0, help="real-time multiple for realtime/free")
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--robot-timeout-ms", type=int, help="wall time a robot may take to answer a frame before "
@@ -111,6 +117,11 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     if args.restart_dead and args.mode == "free":
         p.error("--restart-dead needs lockstep or realtime mode: in free mode the world never marks a "
                 "silent robot inactive, so a restarted shim could not take it over")
+    if args.in_process:
+        for option, given in (("--mode", args.mode != "lockstep"), ("--restart-dead", args.restart_dead),
+                              ("--robot-timeout-ms", args.robot_timeout_ms is not None)):
+            if given:
+                p.error(f"--in-process plays lockstep in one process: {option} does not apply")
     return args
 
 
@@ -171,11 +182,20 @@ class Launcher:
         a = self.args
         bin_world = a.build_dir / "bin" / "sim_world"
         bin_shim = a.build_dir / "bin" / "robot_shim"
-        for b in (bin_world, bin_shim):
+        bin_match = a.build_dir / "bin" / "touchline_match"
+        for b in ((bin_match,) if a.in_process else (bin_world, bin_shim)):
             if not b.exists():
                 print(f"launch: {b} not found; build first (tools/setup)", file=sys.stderr)
                 return 2
         sys.path.insert(0, str(a.build_dir / "lcm_types" / "gen" / "python"))
+        if a.in_process:
+            try:
+                rc = self.play_in_process(bin_match)
+            finally:
+                self.children.stop_all()
+            if rc == 0:
+                shutil.rmtree(self.logdir, ignore_errors=True)
+            return rc
         log = None
         if not a.no_log:
             stamp = datetime.datetime.now().strftime("%Y-%m-%d_%H%M%S")
@@ -218,26 +238,9 @@ class Launcher:
             return rc
         match = watch.match
         targets = kickoff_targets(match)
-        for team, player, x, y, theta in targets:
-            spec = getattr(a, f"team{team}")
-            if spec:
-                behaviour = team_behaviour(spec, a.runswift_dir)
-            elif a.behaviour == "goto":
-                behaviour = ["--behaviour", "goto", "--param", f"x={x:.0f}", "--param", f"y={y:.0f}",
-                             "--param", f"theta={theta:.3f}"]
-            else:
-                behaviour = ["--behaviour", "py", "--param", f"skill={a.skill}"]
-            engine = getattr(a, f"walk_engine{team}") or a.walk_engine
-            keeper.start(team, player, [bin_shim, "--team", team, "--player", player, "--walk-config", a.walk_config,
-                                        "--walk-engine", engine,
-                                        "--field-config", a.config, "--lcm-url", a.lcm_url,
-                                        *(["--data-dir", a.data_dir] if a.data_dir else []), *behaviour])
-        length = f"{a.duration:.0f} s simulated" if a.duration else "two halves"
-        what = a.skill if a.behaviour == "py" else "goto kick-off spots"
-        if a.team0 or a.team1:
-            what = f"{a.team0 or what} v {a.team1 or what}"
-        print(f"launch: {2 * match.team_size} robots ({what}), {length}, {a.mode} mode, seed {a.seed}, "
-              f"field {match.field_length_mm:.0f} x {match.field_width_mm:.0f} mm", flush=True)
+        for team, player, robot in self.robot_options(targets):
+            keeper.start(team, player, [bin_shim, *robot])
+        self.announce(match)
         announced = False
         while world.poll() is None:
             if watch.kicked_off and not announced:  # from here on a dying shim no longer stops the match
@@ -266,13 +269,8 @@ class Launcher:
             return EXIT_FAILED
         summary = json.loads(summary_path.read_text())  # the world's own word, score included: the bus may lie
         summary["events"] = [{"sim_s": t, "what": line} for t, line in sorted(watch.events + keeper.lines())]
-        summary["goals"] = [{"sim_s": e.utime / 1e6, "team": e.team} for e in watch.match_events if e.kind == e.GOAL]
-        summary["penalties"] = [{"sim_s": e.utime / 1e6, "team": e.team, "player": e.player, "kind": e.text}
-                                for e in watch.match_events if e.kind == e.PENALTY]
-        summary["falls"] = [{"sim_s": e.utime / 1e6, "team": e.team, "player": e.player}
-                            for e in watch.match_events if e.kind == e.FALL]
-        summary["set_plays"] = [{"sim_s": e.utime / 1e6, "team": e.team, "what": e.text}
-                                for e in watch.match_events if e.kind == e.SET_PLAY and e.team >= 0]
+        add_match_events(summary, watch.match_events)
+        summary["mode"] = a.mode
         summary["shim_deaths"] = keeper.summary()
         summary["launcher_malformed"] = dict(watch.malformed)
         self.report(summary, targets)
@@ -285,6 +283,88 @@ class Launcher:
         if a.json:
             a.json.write_text(json.dumps(summary, indent=2) + "\n")
         return EXIT_SHIM_DIED if keeper.deaths else 0
+
+    def robot_options(self, targets: list) -> list:
+        """(team, player, robot_shim's options) for every robot: the shims' command lines, and
+        touchline_match's robot groups."""
+        a = self.args
+        robots = []
+        for team, player, x, y, theta in targets:
+            spec = getattr(a, f"team{team}")
+            if spec:
+                behaviour = team_behaviour(spec, a.runswift_dir)
+            elif a.behaviour == "goto":
+                behaviour = ["--behaviour", "goto", "--param", f"x={x:.0f}", "--param", f"y={y:.0f}",
+                             "--param", f"theta={theta:.3f}"]
+            else:
+                behaviour = ["--behaviour", "py", "--param", f"skill={a.skill}"]
+            engine = getattr(a, f"walk_engine{team}") or a.walk_engine
+            robots.append((team, player, ["--team", team, "--player", player, "--walk-config", a.walk_config,
+                                          "--walk-engine", engine, "--field-config", a.config,
+                                          *([] if a.in_process else ["--lcm-url", a.lcm_url]),
+                                          *(["--data-dir", a.data_dir] if a.data_dir else []), *behaviour]))
+        return robots
+
+    def world_options(self) -> list:
+        """The world's options both world programs take: config, team size, duration, seed."""
+        a = self.args
+        return ["--config", a.config, "--set", f"match.team_size={a.team_size}",
+                *(["--duration", a.duration] if a.duration else []),
+                *[arg for item in a.set for arg in ("--set", item)], "--seed", a.seed]
+
+    def announce(self, match) -> None:
+        a = self.args
+        length = f"{a.duration:.0f} s simulated" if a.duration else "two halves"
+        what = a.skill if a.behaviour == "py" else "goto kick-off spots"
+        if a.team0 or a.team1:
+            what = f"{a.team0 or what} v {a.team1 or what}"
+        print(f"launch: {2 * match.team_size} robots ({what}), {length}, {mode(a)} mode, seed {a.seed}, "
+              f"field {match.field_length_mm:.0f} x {match.field_width_mm:.0f} mm", flush=True)
+
+    def play_in_process(self, bin_match: Path) -> int:
+        """The match in one process (touchline_match): the robots' options as the shims would get
+        them; its summary carries the match's events, which lockstep takes from the bus."""
+        a = self.args
+        world = [str(arg) for arg in [bin_match, *self.world_options()]]
+        # The robots are placed on the field the match is played on (the config after every --set).
+        described = subprocess.run([*world, "--print-match"], capture_output=True, text=True)
+        if described.returncode != 0:
+            print(f"launch: {described.stderr.strip() or 'touchline_match --print-match failed'}", file=sys.stderr)
+            return described.returncode if described.returncode == 2 else EXIT_FAILED
+        match = types.SimpleNamespace(**json.loads(described.stdout))
+        targets = kickoff_targets(match)
+        summary_path = self.logdir / "summary.json"
+        argv = [*world, "--summary", summary_path, "--quiet"]
+        for _, _, robot in self.robot_options(targets):
+            argv += ["--", *robot]
+        self.announce(match)
+        child = self.children.start("touchline_match", argv)
+        while child.poll() is None:
+            if (rc := self.interrupted()) is not None:
+                return rc
+            time.sleep(0.05)  # polling the child's exit code, not hiding a race
+        if (rc := self.interrupted()) is not None:
+            return rc
+        if child.poll() != 0 or not summary_path.exists():
+            print(f"launch: touchline_match {child.why()} (logs in {self.logdir})", file=sys.stderr)
+            return 2 if child.poll() == 2 else EXIT_FAILED
+        summary = json.loads(summary_path.read_text())
+        from touchline import match_event_t
+        events = []
+        for fields in summary.pop("match_events"):
+            event = match_event_t()
+            for key, value in fields.items():
+                setattr(event, key, value)
+            events.append(event)
+        summary["events"] = []  # robot trouble the world reports over the bus: none without one
+        add_match_events(summary, events)
+        summary["mode"] = "in-process"
+        summary["shim_deaths"] = []
+        summary["launcher_malformed"] = {}
+        self.report(summary, targets)
+        if a.json:
+            a.json.write_text(json.dumps(summary, indent=2) + "\n")
+        return 0
 
     def wait_for_match(self, world, watch: MatchWatch) -> int | None:
         """Waits for the world's TL_MATCH; an exit code if the match cannot go on without it."""
@@ -307,7 +387,7 @@ class Launcher:
     def report(self, summary: dict, targets: list) -> None:
         a = self.args
         print(f"Match: {summary['sim_s']:.0f} s simulated in {summary['wall_s']:.1f} s (x{summary['rtf']:.1f} real time), "
-              f"{a.mode} mode, seed {a.seed}, score {summary['score'][0]}:{summary['score'][1]}, "
+              f"{mode(a)} mode, seed {a.seed}, score {summary['score'][0]}:{summary['score'][1]}, "
               f"truth hash {summary['truth_hash']}")
         goals = ", ".join(f"team {g['team']} at {clock(g['sim_s'])}" for g in summary["goals"]) or "none"
         print(f"Goals: {goals}")
@@ -347,6 +427,22 @@ class Launcher:
             print(f"  malformed messages ignored: {summary['malformed']}, late answers dropped: {summary['stale']}")
 
 
+def mode(args: argparse.Namespace) -> str:
+    return "in-process" if args.in_process else args.mode
+
+
+def add_match_events(summary: dict, match_events: list) -> None:
+    """The summary's goals, penalties, falls and set plays from the world's match_event_t
+    messages (TL_EVENT, or touchline_match's summary)."""
+    summary["goals"] = [{"sim_s": e.utime / 1e6, "team": e.team} for e in match_events if e.kind == e.GOAL]
+    summary["penalties"] = [{"sim_s": e.utime / 1e6, "team": e.team, "player": e.player, "kind": e.text}
+                            for e in match_events if e.kind == e.PENALTY]
+    summary["falls"] = [{"sim_s": e.utime / 1e6, "team": e.team, "player": e.player}
+                        for e in match_events if e.kind == e.FALL]
+    summary["set_plays"] = [{"sim_s": e.utime / 1e6, "team": e.team, "what": e.text}
+                            for e in match_events if e.kind == e.SET_PLAY and e.team >= 0]
+
+
 def clock(sim_s: float) -> str:
     return f"{int(sim_s // 60)}:{int(sim_s % 60):02d}"
 
@@ -354,7 +450,7 @@ def clock(sim_s: float) -> str:
 def main(argv: list[str]) -> int:
     stop = StopSignal()  # first: a Ctrl-C from here on gives one line, never a traceback
     args = parse_args(argv)
-    if not args.host_network and os.environ.get("TOUCHLINE_IN_NETNS") != "1":
+    if not args.host_network and not args.in_process and os.environ.get("TOUCHLINE_IN_NETNS") != "1":
         # exec, not a child: tools/netns execs the launcher again in the namespace, so this
         # process stays the launcher and a signal sent to it (or to tools/match, which execs
         # this) stops the match instead of orphaning it.
