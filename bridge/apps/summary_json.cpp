@@ -32,7 +32,7 @@ std::string json_escaped(const std::string& text) {
 } // namespace
 
 void write_summary_json(const std::string& path, const sim::Match& match, const transport::RunSummary& s,
-                        uint64_t seed, const std::vector<sim::MatchEvent>* events) {
+                        uint64_t seed, const std::optional<InProcessExtras>& extras) {
   std::ofstream out(path);
   if (!out) throw std::runtime_error("cannot write summary to " + path);
   const sim::TruthFrame truth = match.truth();
@@ -72,10 +72,13 @@ void write_summary_json(const std::string& path, const sim::Match& match, const 
         << ", \"y_mm\": " << r.truth.body.y_mm << ", \"theta_rad\": " << r.truth.body.theta_rad << "}";
   }
   out << "\n  ]";
-  if (events) {
+  if (extras) {
+    const std::vector<sim::MatchEvent>& events = extras->events;
+    out << ",\n  \"world_wall_s\": " << extras->world_wall_s << ",\n  \"physics_rtf\": "
+        << (extras->world_wall_s > 0 ? s.sim_s / extras->world_wall_s : 0);
     out << ",\n  \"match_events\": [";
-    for (size_t i = 0; i < events->size(); ++i) {
-      const match_event_t e = transport::to_msg((*events)[i]);
+    for (size_t i = 0; i < events.size(); ++i) {
+      const match_event_t e = transport::to_msg(events[i]);
       out << (i ? ",\n" : "\n") << "    {\"utime\": " << e.utime << ", \"kind\": " << int{e.kind}
           << ", \"team\": " << int{e.team} << ", \"player\": " << int{e.player} << ", \"text\": \""
           << json_escaped(e.text) << "\"}";

@@ -201,7 +201,8 @@ int main(int argc, char** argv) {
               << (summary.wall_s > 0 ? summary.sim_s / summary.wall_s : 0) << " real time), score "
               << match.game().score[0] << ":" << match.game().score[1] << ", truth hash "
               << transport::hex_hash(summary.truth_hash) << "\n";
-    if (!summary_path.empty()) apps::write_summary_json(summary_path, match, summary, seed, &events);
+    if (!summary_path.empty())
+      apps::write_summary_json(summary_path, match, summary, seed, apps::InProcessExtras{std::move(events), play->world_wall_s()});
     return summary.interrupted ? 128 + g_stop_signal : 0;
   } catch (const std::exception& e) {
     std::cerr << "touchline_match: " << e.what() << "\n";
