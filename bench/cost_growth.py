@@ -9,6 +9,10 @@ Python Team >= 100x real time.
 
 Every match is tools/launch.py's, as a user plays it (--json summary). In-process runs are
 pinned to one core (taskset -c 0); lockstep runs may use every core, one process per robot.
+Beside each real-time factor (simulated s per wall s) a CPU one (simulated s per CPU s),
+which other load on the machine hardly moves: in-process, the match loop's own CPU time
+(touchline_match's cpu_s); lockstep, every process's (world, shims and launcher, start-up
+included: what a machine running many matches pays).
 Run it through bench/cost_growth (a private network namespace: LCM stays on its loopback).
 """
 from __future__ import annotations
@@ -16,7 +20,9 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import resource
 import shutil
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -51,7 +57,7 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
 
 
 def match(args, tmp: Path, team: str, robots: int, in_process: bool, config: Path) -> dict:
-    """The median (by real-time factor) of --repeat matches' launch.py --json summaries."""
+    """Medians over --repeat matches: rtf, cpu_rtf, physics_rtf (in-process only)."""
     runs = []
     for i in range(args.repeat):
         out = tmp / f"summary_{i}.json"
@@ -61,13 +67,21 @@ def match(args, tmp: Path, team: str, robots: int, in_process: bool, config: Pat
                    "--json", str(out), *(["--in-process"] if in_process else [])]
         if in_process:
             command = ["taskset", "-c", "0", *command]
+        before = resource.getrusage(resource.RUSAGE_CHILDREN)
         result = subprocess.run(command, capture_output=True, text=True)
+        after = resource.getrusage(resource.RUSAGE_CHILDREN)
         if result.returncode != 0:
             raise SystemExit(f"cost_growth: {' '.join(command)} failed ({result.returncode}): "
                              f"{(result.stderr or result.stdout).strip().splitlines()[-1:]}")
-        runs.append(json.loads(out.read_text()))
-    runs.sort(key=lambda s: s["rtf"])
-    return runs[len(runs) // 2]
+        summary = json.loads(out.read_text())
+        if not in_process:  # every process of the match, waited for by the launcher
+            cpu_s = after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
+            summary["cpu_rtf"] = summary["sim_s"] / cpu_s
+        runs.append(summary)
+    medians = {key: statistics.median(s[key] for s in runs) for key in ("rtf", "cpu_rtf")}
+    if in_process:
+        medians["physics_rtf"] = statistics.median(s["physics_rtf"] for s in runs)
+    return medians
 
 
 def lcm_caps(args, robots: list[int]) -> dict:
@@ -91,19 +105,20 @@ def main(argv: list[str]) -> int:
               f"{args.duration:.0f} s simulated, median of {args.repeat}:", flush=True)
         for team, goal in GOALS.items():
             s = match(args, tmp, team, 8, True, ROOT / "config" / "spl2011.ini")
-            figures["goal"][team] = {"rtf": s["rtf"], "goal_rtf": goal, "physics_rtf": s["physics_rtf"]}
-            print(f"  {team:<9} x{s['rtf']:7.1f} real time, goal x{goal}: {s['rtf'] / goal:5.2f} of it "
-                  f"({'met' if s['rtf'] >= goal else 'NOT met'})", flush=True)
+            figures["goal"][team] = {**s, "goal_rtf": goal}
+            print(f"  {team:<9} x{s['rtf']:7.1f} real time (x{s['cpu_rtf']:7.1f} per CPU second), goal x{goal}: "
+                  f"{s['rtf'] / goal:5.2f} of it ({s['cpu_rtf'] / goal:5.2f} by CPU time); the world alone "
+                  f"x{s['physics_rtf']:.1f}", flush=True)
         caps = {} if args.no_lockstep else lcm_caps(args, args.robots)
         print(f"\nCost growth on {args.config.name}, {args.duration:.0f} s simulated, median of {args.repeat} "
-              f"(RTF = x real time; ex/s = robot answers per wall second; in-process on one core, "
-              f"lockstep on {os.cpu_count()} cores)")
+              f"(RTF = x real time; CPU = simulated s per CPU s; ex/s = robot answers per wall second; in-process "
+              f"on one core, lockstep on {os.cpu_count()} cores; LCM cap and physics limit as RTF)")
         modes = [("in-process", True)] + ([] if args.no_lockstep else [("lockstep", False)])
-        header = f"{'robots':>6} {'LCM cap':>9} {'physics':>9}"
+        header = f"{'robots':>6} {'LCM cap':>8} {'physics':>8}"
         for mode, _ in modes:
             for team in GOALS:
                 header += f" {mode + ' ' + team.split(':')[0]:>24}"
-        print(header + "\n" + " " * 26 + "".join(f" {'RTF':>10} {'ex/s':>13}" for _ in range(2 * len(modes))),
+        print(header + "\n" + " " * 24 + "".join(f" {'RTF':>7} {'CPU':>7} {'ex/s':>8}" for _ in range(2 * len(modes))),
               flush=True)
         for n in args.robots:
             row = {"robots": n, "lcm_cap_rtf": caps[n]["cap_rtf"] if caps else None,
@@ -113,12 +128,12 @@ def main(argv: list[str]) -> int:
                 for team in GOALS:
                     s = match(args, tmp, team, n, in_process, args.config)
                     key = f"{mode}_{team.split(':')[0]}"
-                    row[key] = {"rtf": s["rtf"], "exchanges_per_s": n * FRAMES_PER_S * s["rtf"]}
+                    row[key] = {**s, "exchanges_per_s": n * FRAMES_PER_S * s["rtf"]}
                     if in_process and team == "cpp:Team":
                         row["physics_rtf"] = s["physics_rtf"]
-                    cells += f" {s['rtf']:10.1f} {row[key]['exchanges_per_s']:13.0f}"
-            cap = f"{row['lcm_cap_rtf']:9.1f}" if caps else f"{'-':>9}"
-            print(f"{n:>6} {cap} {row['physics_rtf']:9.1f}{cells}", flush=True)
+                    cells += f" {s['rtf']:7.1f} {s['cpu_rtf']:7.1f} {row[key]['exchanges_per_s']:8.0f}"
+            cap = f"{row['lcm_cap_rtf']:8.1f}" if caps else f"{'-':>8}"
+            print(f"{n:>6} {cap} {row['physics_rtf']:8.1f}{cells}", flush=True)
             figures["table"].append(row)
         if args.json:
             args.json.write_text(json.dumps(figures, indent=2) + "\n")

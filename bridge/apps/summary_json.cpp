@@ -75,7 +75,8 @@ void write_summary_json(const std::string& path, const sim::Match& match, const 
   if (extras) {
     const std::vector<sim::MatchEvent>& events = extras->events;
     out << ",\n  \"world_wall_s\": " << extras->world_wall_s << ",\n  \"physics_rtf\": "
-        << (extras->world_wall_s > 0 ? s.sim_s / extras->world_wall_s : 0);
+        << (extras->world_wall_s > 0 ? s.sim_s / extras->world_wall_s : 0) << ",\n  \"cpu_s\": " << extras->cpu_s
+        << ",\n  \"cpu_rtf\": " << (extras->cpu_s > 0 ? s.sim_s / extras->cpu_s : 0);
     out << ",\n  \"match_events\": [";
     for (size_t i = 0; i < events.size(); ++i) {
       const match_event_t e = transport::to_msg(events[i]);

@@ -5,6 +5,7 @@
 // Thin program: options -> InProcessMatch -> summary.
 #include <chrono>
 #include <csignal>
+#include <ctime>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -68,6 +69,13 @@ apps::RobotOptions parse_robot(const std::vector<std::string>& args) {
   po::notify(vm);
   apps::finish_robot_options(robot);
   return robot;
+}
+
+/// CPU seconds this process has used: what the match costs whatever else the machine runs.
+double process_cpu_s() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
 }
 
 void print_progress(const sim::Match& match, double wall_s) {
@@ -180,6 +188,7 @@ int main(int argc, char** argv) {
     transport::TruthHash truth_hash;
     play->start();
     const auto start = std::chrono::steady_clock::now();
+    const double start_cpu_s = process_cpu_s();
     const auto wall_s = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     // As the world node runs its lockstep frames: every robot answers, the world steps, and
     // the truth after the step goes into the hash.
@@ -202,7 +211,7 @@ int main(int argc, char** argv) {
               << match.game().score[0] << ":" << match.game().score[1] << ", truth hash "
               << transport::hex_hash(summary.truth_hash) << "\n";
     if (!summary_path.empty())
-      apps::write_summary_json(summary_path, match, summary, seed, apps::InProcessExtras{std::move(events), play->world_wall_s()});
+      apps::write_summary_json(summary_path, match, summary, seed, apps::InProcessExtras{std::move(events), play->world_wall_s(), process_cpu_s() - start_cpu_s});
     return summary.interrupted ? 128 + g_stop_signal : 0;
   } catch (const std::exception& e) {
     std::cerr << "touchline_match: " << e.what() << "\n";
