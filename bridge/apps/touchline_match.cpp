@@ -37,9 +37,10 @@ constexpr const char* kUsage =
     "Usage: touchline_match [world options] -- [robot options] -- [robot options] ...\n"
     "The world options are sim_world's (below); each group after a -- is one robot, in robot_shim's\n"
     "options (robot_shim --help), e.g. --team 0 --player 1 --behaviour py --param skill=Team.\n"
-    "Bus options of a robot (--lcm-url, --secret-file, timeouts, --snapshot-every) are accepted and\n"
-    "unused. Same seed and robots: the same match, truth hash included, as sim_world + robot_shim\n"
-    "in lockstep.\nWorld options";
+    "A robot's bus options (--lcm-url, --secret-file, --join-timeout, --world-timeout,\n"
+    "--snapshot-every) are accepted and unused; every robot needs the same --data-dir. Same seed and\n"
+    "robots: the same match, truth hash included, as sim_world + robot_shim in lockstep.\n"
+    "Exit status: 0 played, 2 bad options (one line), 1 failed, 128 + signal when stopped.\nWorld options";
 
 volatile std::sig_atomic_t g_stop_signal = 0;
 
@@ -102,7 +103,8 @@ int main(int argc, char** argv) {
      "random seed, 0..2^64-1: the camera noise, false negatives and falls all draw from it")
     ("summary", po::value(&summary_path),
      "write a JSON summary of the match to this path at its end, as sim_world --summary does, with the "
-     "match's events (goals, penalties, falls, set plays) as \"match_events\" (checked writable at start)")
+     "match's events (goals, penalties, falls, set plays) as \"match_events\", the world's own wall time "
+     "(world_wall_s, physics_rtf) and the match's CPU time (cpu_s, cpu_rtf) (checked writable at start)")
     ("print-match", "print the match's set-up (team size, field size, duration: the config after every "
      "--set) as one JSON line and exit, without robots")
     ("quiet", "no progress lines");

@@ -107,3 +107,11 @@ def test_print_match_is_the_config_after_every_set():
     assert result.returncode == 0, result.stderr
     assert json.loads(result.stdout) == {"team_size": 7, "field_length_mm": 9000, "field_width_mm": 6000,
                                          "duration_s": 12}
+
+
+def test_help_documents_the_world_and_the_robots():
+    result = run("--help")
+    assert result.returncode == 0, result.stderr
+    for option in ["--config", "--set", "--duration", "--seed", "--summary", "--print-match", "--quiet"]:
+        assert option in result.stdout
+    assert "-- [robot options]" in result.stdout and "goto" in result.stdout and "py:MODULE" in result.stdout
