@@ -163,6 +163,7 @@ std::string default_bin_dir() {
 int main(int argc, char** argv) {
   Options opt;
   std::vector<std::string> bin_dirs;
+  std::vector<int> responders = {1, 8};
   po::options_description options(
       "touchline_bench: LCM round-trip floor and lockstep real-time factor, 1 and 8 robots.\n"
       "Run it through bench/run (a private network namespace; LCM stays on loopback).\n"
@@ -180,7 +181,11 @@ int main(int argc, char** argv) {
                                                    "plus start-up)")
     ("lcm-url", po::value(&opt.lcm_url)->default_value(opt.lcm_url), "LCM provider URL (keep ttl=0)")
     ("json", po::value(&opt.json_path), "write the figures as JSON to this path")
-    ("keep-logs", "keep the children's logs and summaries (printed folder) after a successful run");
+    ("keep-logs", "keep the children's logs and summaries (printed folder) after a successful run")
+    ("responders", po::value(&responders)->multitoken(),
+     "responder counts for the LCM round-trip floor (default 1 8; with --floor-only any of 1..64)")
+    ("floor-only", "measure the LCM round-trip floor only and print it as one JSON line per responder count "
+                   "(bench/cost_growth's LCM cap)");
 
   try {
     po::variables_map vm;
@@ -200,6 +205,26 @@ int main(int argc, char** argv) {
     if (opt.warmup < 0) throw po::error("--warmup must be >= 0");
     if (vm.count("run-timeout") && !(opt.run_timeout_s > 0)) throw po::error("--run-timeout must be > 0");
     if (opt.lcm_url.empty()) throw po::error("--lcm-url must not be empty");
+    for (int n : responders)
+      if (n < 1 || n > 64) throw po::error("--responders must be 1..64");
+    if (!vm.count("floor-only") && responders != std::vector<int>{1, 8})
+      throw po::error("--responders other than 1 8 needs --floor-only (the report compares 1 and 8 robots)");
+    if (vm.count("floor-only")) {
+      if (std::getenv("TOUCHLINE_IN_NETNS") == nullptr)
+        std::cerr << "touchline_bench: warning: not inside tools/netns; LCM traffic uses this host's loopback\n";
+      try {
+        for (int n : responders) {
+          const FloorResult f = measure_floor(opt, n);
+          std::cout << "{\"responders\": " << n << ", \"median_us\": " << f.median_us << ", \"p90_us\": "
+                    << f.p90_us << ", \"lost_rounds\": " << f.lost_rounds << ", \"cap_rtf\": "
+                    << cap_rtf(f.median_us) << "}" << std::endl;
+        }
+      } catch (const std::exception& e) {
+        std::cerr << "touchline_bench: " << e.what() << "\n";
+        return kFailure;
+      }
+      return 0;
+    }
   } catch (const po::error& e) {
     std::cerr << "touchline_bench: " << e.what() << " (see --help)\n";
     return kUsageError;

@@ -18,9 +18,11 @@ import os
 import secrets
 import shutil
 import signal
+import subprocess
 import sys
 import tempfile
 import time
+import types
 from pathlib import Path
 
 from match_checks import BadInput, check_python_skill, check_robot, check_world
@@ -100,6 +102,10 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     p.add_argument("--data-dir", type=Path, help="the robots' data directory (learned policies; default: "
                    "robot_shim's, the source tree's config/)")
     p.add_argument("--mode", choices=["lockstep", "realtime", "free"], default="lockstep")
+    p.add_argument("--in-process", action="store_true",
+                   help="play the world and every robot in one process (build/bin/touchline_match), as fast as "
+                        "one core allows: the same match as lockstep (same seed, same truth hash) without LCM, "
+                        "so no network namespace, bus, log or progress bar")
     p.add_argument("--speed", type=float, default=1.0, help="real-time multiple for realtime/free")
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--robot-timeout-ms", type=int, help="wall time a robot may take to answer a frame before "
@@ -149,6 +155,11 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     if args.restart_dead and args.mode == "free":
         p.error("--restart-dead needs lockstep or realtime mode: in free mode the world never marks a "
                 "silent robot inactive, so a restarted shim could not take it over")
+    if args.in_process:
+        for option, given in (("--mode", args.mode != "lockstep"), ("--restart-dead", args.restart_dead),
+                              ("--robot-timeout-ms", args.robot_timeout_ms is not None)):
+            if given:
+                p.error(f"--in-process plays lockstep in one process: {option} does not apply")
     return args
 
 
@@ -169,12 +180,17 @@ def team_behaviour(spec: str, runswift_dir: Path | None = None) -> list | None:
     return ["--behaviour", skill, *params]
 
 
-def world_options(a: argparse.Namespace) -> list:
-    """sim_world's options for the match (its --check takes the same)."""
+def match_options(a: argparse.Namespace) -> list:
+    """The match's options both world programs take (sim_world, touchline_match): config,
+    team size, duration, overrides, seed."""
     return ["--config", a.config, "--set", f"match.team_size={a.team_size}",
             *(["--duration", a.duration] if a.duration else []),
-            *[arg for item in a.set for arg in ("--set", item)],
-            "--mode", a.mode, "--speed", a.speed, "--seed", a.seed,
+            *[arg for item in a.set for arg in ("--set", item)], "--seed", a.seed]
+
+
+def world_options(a: argparse.Namespace) -> list:
+    """sim_world's options for the match (its --check takes the same)."""
+    return [*match_options(a), "--mode", a.mode, "--speed", a.speed,
             *(["--robot-timeout-ms", a.robot_timeout_ms] if a.robot_timeout_ms else []),
             "--lcm-url", a.lcm_url]
 
@@ -207,8 +223,9 @@ def shim_command(a: argparse.Namespace, bin_shim: Path, team: int, player: int, 
             passed += [option] if value else []
         elif value is not None:
             passed += [option, value]
+    bus = [] if a.in_process else ["--lcm-url", a.lcm_url]  # touchline_match's robots have no bus
     return [bin_shim, "--team", team, "--player", player, "--walk-config", a.walk_config, "--walk-engine", engine,
-            "--field-config", a.config, "--lcm-url", a.lcm_url, *(["--data-dir", a.data_dir] if a.data_dir else []),
+            "--field-config", a.config, *bus, *(["--data-dir", a.data_dir] if a.data_dir else []),
             *passed, *behaviour]
 
 
@@ -219,7 +236,8 @@ def preflight(a: argparse.Namespace):
     for b in (bin_world, bin_shim):
         if not b.exists():
             raise BadInput(f"{b} not found; build first (tools/setup)")
-    plan = check_world(bin_world, world_options(a))
+    # In process, touchline_match --print-match checks the world config (and there is no bus to open).
+    plan = None if a.in_process else check_world(bin_world, world_options(a))
     for team in (0, 1):
         spec = getattr(a, f"team{team}")
         what = f"--team{team} {spec}" if spec else f"--skill {a.skill}" if a.behaviour == "py" else "--behaviour goto"
@@ -271,11 +289,20 @@ class Launcher:
         a = self.args
         bin_world = a.build_dir / "bin" / "sim_world"
         bin_shim = a.build_dir / "bin" / "robot_shim"
-        for b in (bin_world, bin_shim):
+        bin_match = a.build_dir / "bin" / "touchline_match"
+        for b in ((bin_match,) if a.in_process else (bin_world, bin_shim)):
             if not b.exists():
                 logger.error(f"launch: {b} not found; build first (tools/setup)")
                 return 2
         sys.path.insert(0, str(a.build_dir / "lcm_types" / "gen" / "python"))
+        if a.in_process:
+            try:
+                rc = self.play_in_process(bin_match)
+            finally:
+                self.children.stop_all()
+            if rc == 0:
+                shutil.rmtree(self.logdir, ignore_errors=True)
+            return rc
         log = None
         if not a.no_log:
             stamp = datetime.datetime.now().strftime("%Y-%m-%d_%H%M%S")
@@ -313,12 +340,7 @@ class Launcher:
         targets = kickoff_targets(match)
         for team, player, x, y, theta in targets:
             keeper.start(team, player, shim_command(a, bin_shim, team, player, robot_behaviour(a, team, (x, y, theta))))
-        length = f"{a.duration:.0f} s simulated" if a.duration else "two halves"
-        what = a.skill if a.behaviour == "py" else "goto kick-off spots"
-        if a.team0 or a.team1:
-            what = f"{a.team0 or what} v {a.team1 or what}"
-        logger.info(f"launch: {2 * match.team_size} robots ({what}), {length}, {a.mode} mode, seed {a.seed}, "
-              f"field {match.field_length_mm:.0f} x {match.field_width_mm:.0f} mm")
+        self.announce(match)
         announced = False
         while world.poll() is None:
             if watch.kicked_off and not announced:  # from here on a dying shim no longer stops the match
@@ -347,15 +369,8 @@ class Launcher:
             return EXIT_FAILED
         summary = json.loads(summary_path.read_text())  # the world's own word, score included: the bus may lie
         summary["events"] = [{"sim_s": t, "what": line} for t, line in sorted(watch.events + keeper.lines())]
-        summary["goals"] = [{"sim_s": e.utime / 1e6, "team": e.team} for e in watch.match_events if e.kind == e.GOAL]
-        summary["penalties"] = [{"sim_s": e.utime / 1e6, "team": e.team, "player": e.player, "kind": e.text}
-                                for e in watch.match_events if e.kind == e.PENALTY]
-        summary["falls"] = [{"sim_s": e.utime / 1e6, "team": e.team, "player": e.player}
-                            for e in watch.match_events if e.kind == e.FALL]
-        summary["set_plays"] = [{"sim_s": e.utime / 1e6, "team": e.team, "what": e.text}
-                                for e in watch.match_events if e.kind == e.SET_PLAY and e.team >= 0]
-        summary["game_stuck"] = [{"sim_s": e.utime / 1e6, "kickoff_team": e.team, "what": e.text}
-                                 for e in watch.match_events if e.kind == e.GAME_STUCK]
+        add_match_events(summary, watch.match_events)
+        summary["mode"] = a.mode
         summary["shim_deaths"] = keeper.summary()
         summary["launcher_malformed"] = dict(watch.malformed)
         self.report(summary, targets)
@@ -368,6 +383,60 @@ class Launcher:
         if a.json:
             a.json.write_text(json.dumps(summary, indent=2) + "\n")
         return EXIT_SHIM_DIED if keeper.deaths else 0
+
+    def announce(self, match) -> None:
+        a = self.args
+        length = f"{a.duration:.0f} s simulated" if a.duration else "two halves"
+        what = a.skill if a.behaviour == "py" else "goto kick-off spots"
+        if a.team0 or a.team1:
+            what = f"{a.team0 or what} v {a.team1 or what}"
+        logger.info(f"launch: {2 * match.team_size} robots ({what}), {length}, {mode(a)} mode, seed {a.seed}, "
+                    f"field {match.field_length_mm:.0f} x {match.field_width_mm:.0f} mm")
+
+    def play_in_process(self, bin_match: Path) -> int:
+        """The match in one process (touchline_match): the robots' options as the shims would get
+        them; its summary carries the match's events, which lockstep takes from the bus."""
+        a = self.args
+        world = [str(arg) for arg in [bin_match, *match_options(a)]]
+        # The robots are placed on the field the match is played on (the config after every --set).
+        described = subprocess.run([*world, "--print-match"], capture_output=True, text=True)
+        if described.returncode != 0:
+            logger.error(f"launch: {described.stderr.strip() or 'touchline_match --print-match failed'}")
+            return described.returncode if described.returncode == 2 else EXIT_FAILED
+        match = types.SimpleNamespace(**json.loads(described.stdout))
+        targets = kickoff_targets(match)
+        summary_path = self.logdir / "summary.json"
+        argv = [*world, "--summary", summary_path, "--quiet"]
+        for team, player, x, y, theta in targets:
+            argv += ["--", *shim_command(a, bin_match, team, player, robot_behaviour(a, team, (x, y, theta)))[1:]]
+        self.announce(match)
+        child = self.children.start("touchline_match", argv)
+        while child.poll() is None:
+            if (rc := self.interrupted()) is not None:
+                return rc
+            time.sleep(0.05)  # polling the child's exit code, not hiding a race
+        if (rc := self.interrupted()) is not None:
+            return rc
+        if child.poll() != 0 or not summary_path.exists():
+            logger.error(f"launch: touchline_match {child.why()} (logs in {self.logdir})")
+            return 2 if child.poll() == 2 else EXIT_FAILED
+        summary = json.loads(summary_path.read_text())
+        from touchline import match_event_t
+        events = []
+        for fields in summary.pop("match_events"):
+            event = match_event_t()
+            for key, value in fields.items():
+                setattr(event, key, value)
+            events.append(event)
+        summary["events"] = []  # robot trouble the world reports over the bus: none without one
+        add_match_events(summary, events)
+        summary["mode"] = "in-process"
+        summary["shim_deaths"] = []
+        summary["launcher_malformed"] = {}
+        self.report(summary, targets)
+        if a.json:
+            a.json.write_text(json.dumps(summary, indent=2) + "\n")
+        return 0
 
     def wait_for_match(self, world, watch: MatchWatch) -> int | None:
         """Waits for the world's TL_MATCH; an exit code if the match cannot go on without it."""
@@ -390,7 +459,7 @@ class Launcher:
     def report(self, summary: dict, targets: list) -> None:
         a = self.args
         print(f"Match: {summary['sim_s']:.0f} s simulated in {summary['wall_s']:.1f} s (x{summary['rtf']:.1f} real time), "
-              f"{a.mode} mode, seed {a.seed}, score {summary['score'][0]}:{summary['score'][1]}, "
+              f"{mode(a)} mode, seed {a.seed}, score {summary['score'][0]}:{summary['score'][1]}, "
               f"truth hash {summary['truth_hash']}")
         goals = ", ".join(f"team {g['team']} at {clock(g['sim_s'])}" for g in summary["goals"]) or "none"
         print(f"Goals: {goals}")
@@ -433,6 +502,24 @@ class Launcher:
             print(f"  malformed messages ignored: {summary['malformed']}, late answers dropped: {summary['stale']}")
 
 
+def mode(args: argparse.Namespace) -> str:
+    return "in-process" if args.in_process else args.mode
+
+
+def add_match_events(summary: dict, match_events: list) -> None:
+    """The summary's goals, penalties, falls, set plays and stuck games from the world's match_event_t
+    messages (TL_EVENT, or touchline_match's summary)."""
+    summary["goals"] = [{"sim_s": e.utime / 1e6, "team": e.team} for e in match_events if e.kind == e.GOAL]
+    summary["penalties"] = [{"sim_s": e.utime / 1e6, "team": e.team, "player": e.player, "kind": e.text}
+                            for e in match_events if e.kind == e.PENALTY]
+    summary["falls"] = [{"sim_s": e.utime / 1e6, "team": e.team, "player": e.player}
+                        for e in match_events if e.kind == e.FALL]
+    summary["set_plays"] = [{"sim_s": e.utime / 1e6, "team": e.team, "what": e.text}
+                            for e in match_events if e.kind == e.SET_PLAY and e.team >= 0]
+    summary["game_stuck"] = [{"sim_s": e.utime / 1e6, "kickoff_team": e.team, "what": e.text}
+                             for e in match_events if e.kind == e.GAME_STUCK]
+
+
 def clock(sim_s: float) -> str:
     return f"{int(sim_s // 60)}:{int(sim_s % 60):02d}"
 
@@ -465,7 +552,7 @@ def main(argv: list[str]) -> int:
     stop = StopSignal()  # first: a Ctrl-C from here on gives one line, never a traceback
     args = parse_args(argv)
     setup_logging(args.log_level)
-    if not args.host_network and os.environ.get("TOUCHLINE_IN_NETNS") != "1":
+    if not args.host_network and not args.in_process and os.environ.get("TOUCHLINE_IN_NETNS") != "1":
         # exec, not a child: tools/netns execs the launcher again in the namespace, so this
         # process stays the launcher and a signal sent to it (or to tools/match, which execs
         # this) stops the match instead of orphaning it.

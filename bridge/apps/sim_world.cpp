@@ -2,13 +2,13 @@
 // Thin program: options -> WorldConfig + WorldNodeDef -> run_world -> summary.
 #include <algorithm>
 #include <csignal>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <limits>
 
 #include <boost/program_options.hpp>
 
+#include "touchline/apps/summary_json.hpp"
 #include "touchline/cli.hpp"
 #include "touchline/lcm/lcm_url.hpp"
 #include "touchline/lcm/world_node.hpp"
@@ -40,49 +40,6 @@ transport::GameControllerReceiverOptions parse_gamecontroller(const std::string&
     throw po::error("--gamecontroller must be [ADDRESS:]PORT with a port 1..65535 (got '" + text + "')");
   options.port = static_cast<uint16_t>(value);
   return options;
-}
-
-void write_summary_json(const std::string& path, const sim::Match& match, const transport::RunSummary& s,
-                        uint64_t seed) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error("cannot write summary to " + path);
-  const sim::TruthFrame truth = match.truth();
-  out << std::setprecision(9) << "{\n"
-      << "  \"seed\": " << seed << ",\n"
-      << "  \"frames\": " << s.frames << ",\n"
-      << "  \"sim_s\": " << s.sim_s << ",\n"
-      << "  \"wall_s\": " << s.wall_s << ",\n"
-      << "  \"rtf\": " << (s.wall_s > 0 ? s.sim_s / s.wall_s : 0) << ",\n"
-      << "  \"truth_hash\": \"" << transport::hex_hash(s.truth_hash) << "\",\n"
-      << "  \"malformed\": " << s.malformed << ",\n"
-      << "  \"stale\": " << s.stale << ",\n"
-      << "  \"future\": " << s.future << ",\n"
-      << "  \"duplicates\": " << s.duplicates << ",\n"
-      << "  \"implausible\": " << s.implausible << ",\n"
-      << "  \"unauthenticated\": " << s.unauthenticated << ",\n"
-      << "  \"handler_failures\": " << s.handler_failures << ",\n"
-      << "  \"resent_senses\": " << s.resent_senses << ",\n"
-      << "  \"interrupted\": " << (s.interrupted ? "true" : "false") << ",\n"
-      << "  \"comm\": {\"sent\": " << match.comm().sent() << ", \"delivered\": " << match.comm().delivered()
-      << ", \"lost\": " << match.comm().lost() << ", \"refused\": " << match.comm().refused() << "},\n"
-      << "  \"score\": [" << match.game().score[0] << ", " << match.game().score[1] << "],\n"
-      << "  \"ball\": {\"x_mm\": " << truth.ball.x_mm << ", \"y_mm\": " << truth.ball.y_mm << "},\n"
-      << "  \"robots\": [";
-  for (size_t i = 0; i < truth.robots.size(); ++i) {
-    const auto& r = truth.robots[i];
-    const sim::Member* m = match.roster().find(r.truth.id);
-    out << (i ? ",\n" : "\n") << "    {\"team\": " << r.truth.id.team << ", \"player\": " << r.truth.id.player
-        << ", \"active\": " << (r.active ? "true" : "false")
-        << ", \"frames_answered\": " << (m ? m->frames_answered : 0)
-        << ", \"frames_missed\": " << (m ? m->frames_missed : 0)
-        << ", \"behaviour_cpu_us_mean\": " << (m ? m->behaviour_cpu_us_mean() : 0)
-        << ", \"behaviour_cpu_us_max\": " << (m ? m->behaviour_cpu_us_max : 0)
-        << ", \"localisation_rms_mm\": " << (m ? m->localisation_rms_mm() : 0)
-        << ", \"localisation_rms_rad\": " << (m ? m->localisation_rms_rad() : 0)
-        << ", \"penalised\": " << (r.penalised ? "true" : "false") << ", \"x_mm\": " << r.truth.body.x_mm
-        << ", \"y_mm\": " << r.truth.body.y_mm << ", \"theta_rad\": " << r.truth.body.theta_rad << "}";
-  }
-  out << "\n  ]\n}\n";
 }
 
 void print_summary(const sim::Match& match, const transport::RunSummary& s) {
@@ -209,7 +166,7 @@ int main(int argc, char** argv) {
     sim::Match match(config, seed);
     const transport::RunSummary summary = transport::run_world(match, node, std::cerr);
     print_summary(match, summary);
-    if (!node.summary_path.empty()) write_summary_json(node.summary_path, match, summary, seed);
+    if (!node.summary_path.empty()) apps::write_summary_json(node.summary_path, match, summary, seed);
     return summary.interrupted ? 130 : 0;
   } catch (const std::exception& e) {
     std::cerr << "sim_world: " << e.what() << "\n";

@@ -1,11 +1,17 @@
 #include "touchline/inprocess/inprocess_match.hpp"
 
+#include <chrono>
 #include <stdexcept>
 
 namespace touchline::inprocess {
 
 namespace {
 constexpr int64_t kInstance = 1; // one process: every robot is its own only claimant
+using Clock = std::chrono::steady_clock;
+
+int64_t ns_since(Clock::time_point t0) {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - t0).count();
+}
 
 /// The few dimensions of the world's field that the robot's landmark map needs.
 robot::localisation::FieldMap field_map(const sim::FieldDef& field) {
@@ -22,14 +28,21 @@ robot::Robot& InProcessMatch::add_robot(robot::RobotDef def, std::unique_ptr<api
 }
 
 void InProcessMatch::step_frame() {
+  auto t0 = Clock::now();
   const SenseFrame frame = match_.sense();
+  world_ns_ += ns_since(t0);
   for (size_t i = 0; i < robots_.size(); ++i) {
     robot::Robot& robot = *robots_[i];
     const RobotSense* sense = frame.find(robot.id());
     if (!sense) continue;
-    match_.apply(robot.step(frame, *sense), kInstance + static_cast<int64_t>(i));
+    const RobotAct act = robot.step(frame, *sense);
+    t0 = Clock::now();
+    match_.apply(act, kInstance + static_cast<int64_t>(i));
+    world_ns_ += ns_since(t0);
   }
+  t0 = Clock::now();
   match_.advance();
+  world_ns_ += ns_since(t0);
 }
 
 void InProcessMatch::run_to_end() {

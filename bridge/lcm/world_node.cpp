@@ -11,16 +11,14 @@
 #include <thread>
 
 #include "touchline/game_state_t.hpp"
-#include "touchline/hash.hpp"
 #include "touchline/join_reply_t.hpp"
 #include "touchline/join_t.hpp"
-#include "touchline/match_event_t.hpp"
 #include "touchline/lcm/bus.hpp"
 #include "touchline/lcm/match_config.hpp"
 #include "touchline/lcm/match_recorder.hpp"
+#include "touchline/lcm/world_messages.hpp"
 #include "touchline/robot_status_t.hpp"
 #include "touchline/sim/lockstep.hpp"
-#include "touchline/world_truth_t.hpp"
 
 namespace touchline::transport {
 
@@ -40,33 +38,6 @@ std::string describe(const sim::MatchEvent& event) {
     default: out << event.text; break;
   }
   return out.str();
-}
-
-world_truth_t to_msg(const sim::TruthFrame& truth) {
-  world_truth_t m;
-  m.utime = truth.utime;
-  m.frame = truth.frame;
-  m.ball_x_mm = truth.ball.x_mm;
-  m.ball_y_mm = truth.ball.y_mm;
-  m.ball_vx_mm_s = truth.ball.vx_mm_s;
-  m.ball_vy_mm_s = truth.ball.vy_mm_s;
-  m.num_robots = static_cast<int16_t>(truth.robots.size());
-  for (const auto& r : truth.robots) {
-    robot_truth_t t;
-    t.team = static_cast<int8_t>(r.truth.id.team);
-    t.player = static_cast<int8_t>(r.truth.id.player);
-    t.active = r.active;
-    t.penalised = r.penalised;
-    t.fallen = r.fallen;
-    t.body = to_lcm(r.truth.body);
-    t.left_foot = to_lcm(r.truth.left_foot);
-    t.right_foot = to_lcm(r.truth.right_foot);
-    t.head_yaw_rad = r.head_yaw_rad;
-    t.head_pitch_rad = r.head_pitch_rad;
-    t.chest_led = r.chest_led;
-    m.robots.push_back(t);
-  }
-  return m;
 }
 
 class WorldNode {
@@ -352,16 +323,7 @@ class WorldNode {
   void publish_events() {
     const std::vector<sim::MatchEvent> events = match_.take_events();
     for (const sim::MatchEvent& event : events) {
-      match_event_t msg;
-      msg.utime = event.utime;
-      msg.kind = static_cast<int8_t>(event.kind);
-      msg.team = static_cast<int8_t>(event.team);
-      const bool about_a_robot = event.kind == sim::MatchEvent::Kind::kPenalty ||
-                                 event.kind == sim::MatchEvent::Kind::kReleased ||
-                                 event.kind == sim::MatchEvent::Kind::kFall;
-      msg.player = about_a_robot ? static_cast<int8_t>(event.robot.player) : int8_t{0};
-      msg.text = event.text;
-      publish(kEventChannel, msg);
+      publish(kEventChannel, to_msg(event));
       if (def_.progress) log_ << "sim_world: " << describe(event) << "\n" << std::flush;
     }
     if (!events.empty()) publish_game_state(false); // the game changed: tell the robots and tools at once
@@ -379,7 +341,7 @@ class WorldNode {
   std::unique_ptr<MatchRecorder> recorder_;
   std::optional<GameControllerReceiver> gamecontroller_;
   bool gamecontroller_seen_ = false;
-  Fnv1a truth_hash_;
+  TruthHash truth_hash_;
   RunSummary summary_;
   std::set<int64_t> joined_, rejected_, unknown_;
 };

@@ -16,6 +16,7 @@ PY = sys.executable
 PROGRAMS = [
     ("sim_world", [str(BUILD / "bin" / "sim_world")]),
     ("robot_shim", [str(BUILD / "bin" / "robot_shim")]),
+    ("touchline_match", [str(BUILD / "bin" / "touchline_match")]),
     ("tools/match", [PY, str(ROOT / "tools" / "launch.py")]),
     ("tools/spy", [str(ROOT / "tools" / "spy")]),
     ("tools/spy", [PY, str(ROOT / "tools" / "spy_text.py")]),

@@ -472,6 +472,33 @@ TEST(PythonBehaviours, TwoInOneProcessKeepTheirOwnModulesAndParams) {
   fs::remove_all(dir);
 }
 
+TEST(PythonBehaviours, AModuleLoadedMidMatchStaysItsRobots) {
+  // A helper first imported by a later tick, while the other robot's modules are stashed,
+  // is this robot's: swapping the robots looks at what each loaded, not at every module.
+  std::string pattern = (fs::temp_directory_path() / "touchline-py-XXXXXX").string();
+  ASSERT_NE(mkdtemp(pattern.data()), nullptr);
+  const fs::path dir = pattern;
+  fs::copy_file(kFixtures / "lazy_counter.py", dir / "behaviour.py");
+  fs::copy_file(kFixtures / "count_helper.py", dir / "count_helper.py");
+  auto make = [&](const std::string& id) {
+    PythonBehaviourDef d;
+    d.directory = dir;
+    d.params = {{"id", id}};
+    return std::make_unique<PythonBehaviour>(d);
+  };
+  {
+    auto a = make("1");
+    auto b = make("2");
+    Blackboard bb;
+    for (int i = 0; i < 4; ++i) { // alternating, as in a match
+      EXPECT_FLOAT_EQ(a->tick(bb).body.forward, static_cast<float>(i)) << i;
+      EXPECT_FLOAT_EQ(b->tick(bb).body.forward, static_cast<float>(i)) << i;
+    }
+    EXPECT_FLOAT_EQ(a->tick(bb).body.forward, 4);
+  }
+  fs::remove_all(dir);
+}
+
 TEST(PythonBehaviours, TheErrorRequestStandsWithTheErrorLed) {
   const auto request = touchline::python::error_request();
   EXPECT_EQ(request.body.actionType, ActionCommand::ActionType::STAND);

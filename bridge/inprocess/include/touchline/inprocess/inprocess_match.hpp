@@ -26,6 +26,10 @@ class InProcessMatch {
   /// Frames until the match's duration is over.
   void run_to_end();
 
+  /// Wall seconds step_frame spent in the world (sensing, taking the answers, stepping),
+  /// not in the robots: the fastest this match could run if robot code cost nothing.
+  double world_wall_s() const { return static_cast<double>(world_ns_) * 1e-9; }
+
   sim::Match& match() { return match_; }
   const sim::Match& match() const { return match_; }
   robot::Robot& robot(RobotId id);
@@ -34,6 +38,7 @@ class InProcessMatch {
  private:
   sim::Match match_;
   std::vector<std::unique_ptr<robot::Robot>> robots_;
+  int64_t world_ns_ = 0;
 };
 
 } // namespace touchline::inprocess

@@ -1,0 +1,35 @@
+#pragma once
+// What the world says about the match, as messages: the truth of each frame (TL_TRUTH,
+// whose bytes make the match's truth hash) and the referee's events (TL_EVENT). The world
+// node publishes them; touchline_match (world and robots in one process) hashes and
+// reports the same messages, so both modes give one truth hash for one match.
+#include <cstdint>
+#include <vector>
+
+#include "touchline/hash.hpp"
+#include "touchline/match_event_t.hpp"
+#include "touchline/sim/match.hpp"
+#include "touchline/world_truth_t.hpp"
+
+namespace touchline::transport {
+
+world_truth_t to_msg(const sim::TruthFrame& truth);
+match_event_t to_msg(const sim::MatchEvent& event);
+
+/// The match's truth hash: FNV-1a over every frame's world_truth_t encoding in order (the
+/// message as published, without the bus's tag, so the same seed gives the same hash
+/// whatever the match secret).
+class TruthHash {
+ public:
+  /// One frame, from the encoding as published.
+  void add(const uint8_t* encoded, size_t size) { hash_.add(encoded, size); }
+  /// One frame, encoded here (no bus: the in-process match).
+  void add(const sim::TruthFrame& truth);
+  uint64_t value() const { return hash_.value(); }
+
+ private:
+  Fnv1a hash_;
+  std::vector<uint8_t> buffer_;
+};
+
+} // namespace touchline::transport

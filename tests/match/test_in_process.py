@@ -1,0 +1,117 @@
+"""The in-process match (touchline_match, tools/launch.py --in-process): the world and every
+robot in one process play the same match as sim_world and robot_shim processes in lockstep:
+same seed, same truth hash and the same referee's events, for C++, Python and mixed teams.
+Bad options are one line and exit code 2. Runs in a private network namespace (tools/netns)
+for the lockstep runs it compares with."""
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+import pytest
+
+from touchline_harness import BUILD, ROOT
+
+TOUCHLINE_MATCH = BUILD / "bin" / "touchline_match"
+LAUNCH = [sys.executable, str(ROOT / "tools" / "launch.py"), "--build-dir", str(BUILD), "--no-log", "--no-progress"]
+MATCH_S = 600  # a wall-clock bound that only turns a hang into a failure
+HANG_S = 10
+ROBOT = ["--team", "0", "--player", "1"]
+
+
+def launch(tmp_path, name, *args, env=None):
+    out = tmp_path / f"{name}.json"
+    result = subprocess.run([*LAUNCH, *map(str, args), "--json", out], capture_output=True, text=True,
+                            timeout=MATCH_S, env=env)
+    assert result.returncode == 0, result.stdout + result.stderr
+    return json.loads(out.read_text()), result.stdout
+
+
+@pytest.mark.parametrize("team0, team1, duration_s", [
+    ("cpp:Team", "cpp:Team", 90),  # long enough for penalties, falls and set plays
+    ("py:Team", "py:Team", 10),
+    ("cpp:Team", "py:Team", 10),
+])
+def test_same_seed_same_match_as_lockstep(tmp_path, team0, team1, duration_s):
+    match = ["--team0", team0, "--team1", team1, "--duration", duration_s, "--seed", 7,
+             "--config", ROOT / "config" / "spl2020.ini"]
+    lockstep, _ = launch(tmp_path, "lockstep", *match)
+    in_process, report = launch(tmp_path, "in_process", *match, "--in-process")
+    assert in_process["truth_hash"] == lockstep["truth_hash"]
+    for key in ("frames", "score", "ball", "goals", "penalties", "falls", "set_plays", "comm"):
+        assert in_process[key] == lockstep[key], key
+    assert [(r["team"], r["player"], r["frames_answered"]) for r in in_process["robots"]] == \
+        [(r["team"], r["player"], r["frames_answered"]) for r in lockstep["robots"]]
+    if duration_s == 90:  # the events compared above are not all empty
+        assert in_process["penalties"] and in_process["falls"] and in_process["set_plays"]
+    assert in_process["mode"] == "in-process" and lockstep["mode"] == "lockstep"
+    assert in_process["wall_s"] > 0 and in_process["rtf"] > 0
+    assert f"in-process mode, seed 7, score {in_process['score'][0]}:{in_process['score'][1]}, " \
+           f"truth hash {in_process['truth_hash']}" in report
+
+
+def test_another_seed_is_another_match(tmp_path):
+    match = ["--team0", "cpp:Team", "--team1", "cpp:Team", "--duration", 5, "--in-process"]
+    a, _ = launch(tmp_path, "a", *match, "--seed", 1)
+    b, _ = launch(tmp_path, "b", *match, "--seed", 2)
+    assert a["truth_hash"] != b["truth_hash"]
+
+
+def test_in_process_needs_no_network(tmp_path):
+    # No namespace of the launcher's own and no route at all: nothing of the match goes over LCM.
+    if not shutil.which("unshare") or subprocess.run(["unshare", "--net", "true"]).returncode != 0:
+        pytest.skip("cannot make a network namespace here")
+    env = {k: v for k, v in os.environ.items() if k != "TOUCHLINE_IN_NETNS"}
+    out = tmp_path / "summary.json"
+    result = subprocess.run(["unshare", "--net", *LAUNCH, "--in-process", "--duration", "2", "--team0", "cpp:Team",
+                             "--team1", "py:Team", "--json", out], capture_output=True, text=True, timeout=MATCH_S,
+                            env=env)
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert json.loads(out.read_text())["frames"] == 60
+
+
+def run(*args):
+    return subprocess.run([str(a) for a in [TOUCHLINE_MATCH, *args]], capture_output=True, text=True, timeout=HANG_S)
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--", "--team", "0", "--player", "8"], "robot 1: --player must be an integer in [1, 7] (got '8')"),
+    (["--", *ROBOT, "--", "--team", "1", "--player", "1", "--behaviour", "nope"], "unknown behaviour 'nope'"),
+    (["--", *ROBOT, "--behaviour", "goto", "--param", "x=abc"], "parameter x must be a number"),
+    (["--", *ROBOT, "--frobnicate"], "robot 1: unrecognised option '--frobnicate'"),
+    (["--", *ROBOT, "--walk-engine", "moonwalk"], "robot 1: --walk-engine: unknown walk engine 'moonwalk'"),
+    (["--", *ROBOT, "--walk-config", "/nonexistent.ini"], "cannot open config file (No such file or directory)"),
+    (["--", *ROBOT, "--behaviour", "py:"], "robot 1: --behaviour"),
+    (["--", *ROBOT, "--", *ROBOT], "robot 2 (team 0 player 1)"),  # the roster refuses a second 0/1
+    (["--set", "match.team_size=2", "--", "--team", "0", "--player", "3"], "robot 1 (team 0 player 3)"),
+    (["--", *ROBOT, "--", "--team", "1", "--player", "1", "--data-dir", "/tmp"], "robot 2: --data-dir /tmp differs"),
+    (["--", *ROBOT, "--behaviour", "py:no_such_module"], "no_such_module"),
+    (["--seed", "-1", "--", *ROBOT], "--seed must be an integer in [0, 18446744073709551615] (got '-1')"),
+    (["--summary", "/nonexistent/s.json", "--", *ROBOT], "--summary /nonexistent/s.json: cannot write there"),
+    (["--config", "/nonexistent.ini", "--", *ROBOT], "/nonexistent.ini: cannot open config file"),
+    ([], "no robots"),
+])
+def test_bad_options_are_one_line(args, message):
+    result = run(*args)
+    assert result.returncode == 2, (result.returncode, result.stderr)
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and message in lines[0], result.stderr
+
+
+def test_print_match_is_the_config_after_every_set():
+    result = run("--config", ROOT / "config" / "spl2020.ini", "--set", "match.team_size=7", "--duration", "12")
+    assert result.returncode == 2  # no robots: a usage error, not a match
+    result = run("--config", ROOT / "config" / "spl2020.ini", "--set", "match.team_size=7", "--duration", "12",
+                 "--print-match")
+    assert result.returncode == 0, result.stderr
+    assert json.loads(result.stdout) == {"team_size": 7, "field_length_mm": 9000, "field_width_mm": 6000,
+                                         "duration_s": 12}
+
+
+def test_help_documents_the_world_and_the_robots():
+    result = run("--help")
+    assert result.returncode == 0, result.stderr
+    for option in ["--config", "--set", "--duration", "--seed", "--summary", "--print-match", "--quiet"]:
+        assert option in result.stdout
+    assert "-- [robot options]" in result.stdout and "goto" in result.stdout and "py:MODULE" in result.stdout
