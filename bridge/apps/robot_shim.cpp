@@ -110,7 +110,7 @@ int main(int argc, char** argv) {
       throw ConfigError("--lcm-url '" + node.lcm_url + "': cannot open LCM: " + *problem);
     api::set_data_dir(robot_options.data_dir); // before the behaviour is made: it may load its data
     if (vm.count("check")) {
-      if (!robot::python_module(def.behaviour)) apps::make_behaviour(def, {});
+      if (!robot::python_module(def.behaviour)) apps::make_robot_behaviour(robot_options, "robot_shim");
       else if (!std::filesystem::is_directory(def.behaviour.python_dir))
         throw po::error("--python-dir " + def.behaviour.python_dir + " is not a directory");
       return 0;
