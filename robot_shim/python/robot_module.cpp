@@ -1,5 +1,7 @@
 #include "touchline/python/robot_module.hpp"
 
+#include "touchline/python/blackboard_view.hpp"
+
 #include <pybind11/stl.h>
 
 #include "touchline/robot_api/blackboard.hpp"
@@ -13,13 +15,6 @@ namespace {
 
 using namespace api;
 namespace AC = api::ActionCommand;
-
-/// A read-only attribute that hands Python a copy: a reference would let behaviour code
-/// write through nested values (blackboard.localisation.robotPos.x = ...).
-template <typename Class, typename Value>
-void copy_readonly(py::class_<Class>& cls, const char* name, Value Class::*member) {
-  cls.def_property_readonly(name, [member](const Class& self) { return self.*member; });
-}
 
 void define_geometry(py::module_& m) {
   py::class_<AbsCoord>(m, "AbsCoord", "A field or odometry pose: x, y (mm), theta (rad)")
@@ -121,58 +116,14 @@ void define_blackboard(py::module_& m) {
       .value("KICK_IN", SetPlay::KICK_IN)
       .value("PENALTY_KICK", SetPlay::PENALTY_KICK);
 
-  // Read-only views: behaviour code reads the Blackboard, only adapters write it.
-  py::class_<MotionBlackboard> motion(m, "MotionBlackboard");
-  copy_readonly(motion, "odometry", &MotionBlackboard::odometry);
-  copy_readonly(motion, "active", &MotionBlackboard::active);
-  motion.def_readonly("headYaw", &MotionBlackboard::headYaw)
-      .def_readonly("headPitch", &MotionBlackboard::headPitch)
-      .def_readonly("standing", &MotionBlackboard::standing)
-      .def_readonly("kickPhase", &MotionBlackboard::kickPhase)
-      .def_readonly("fallen", &MotionBlackboard::fallen)
-      .def_readonly("ticks", &MotionBlackboard::ticks);
-
-  py::class_<LocalisationBlackboard> localisation(m, "LocalisationBlackboard");
-  copy_readonly(localisation, "robotPos", &LocalisationBlackboard::robotPos);
-  copy_readonly(localisation, "ballPos", &LocalisationBlackboard::ballPos);
-  copy_readonly(localisation, "ballPosRR", &LocalisationBlackboard::ballPosRR);
-  copy_readonly(localisation, "teamBallPos", &LocalisationBlackboard::teamBallPos);
-  localisation.def_readonly("ballLostCount", &LocalisationBlackboard::ballLostCount);
-
-  py::class_<VisionBlackboard> vision(m, "VisionBlackboard");
-  copy_readonly(vision, "ball", &VisionBlackboard::ball);
-  vision.def_readonly("ballSeen", &VisionBlackboard::ballSeen).def_readonly("frame", &VisionBlackboard::frame);
-
-  py::class_<GameControllerBlackboard>(m, "GameControllerBlackboard")
-      .def_readonly("state", &GameControllerBlackboard::state)
-      .def_readonly("team", &GameControllerBlackboard::team)
-      .def_readonly("playerNumber", &GameControllerBlackboard::playerNumber)
-      .def_readonly("penalised", &GameControllerBlackboard::penalised)
-      .def_readonly("score", &GameControllerBlackboard::score)
-      .def_readonly("secsRemaining", &GameControllerBlackboard::secsRemaining)
-      .def_readonly("setPlay", &GameControllerBlackboard::setPlay)
-      .def_readonly("setPlayTeam", &GameControllerBlackboard::setPlayTeam);
   py::class_<TeamMessage>(m, "TeamMessage")
       .def_readonly("playerNumber", &TeamMessage::playerNumber)
       .def_readonly("utime", &TeamMessage::utime)
       .def_property_readonly("data", [](const TeamMessage& t) {
         return py::bytes(reinterpret_cast<const char*>(t.data.data()), t.data.size());
       });
-  py::class_<ReceiverBlackboard>(m, "ReceiverBlackboard").def_readonly("messages", &ReceiverBlackboard::messages);
-
-  py::class_<BehaviourBlackboard> behaviour(m, "BehaviourBlackboard");
-  copy_readonly(behaviour, "request", &BehaviourBlackboard::request);
-  behaviour.def_readonly("skill", &BehaviourBlackboard::skill);
-
-  py::class_<Blackboard>(m, "Blackboard", "the robot's Blackboard, read-only")
-      .def(py::init<>()) // empty boards, for tests of behaviour code
-      .def_readonly("utime", &Blackboard::utime)
-      .def_readonly("motion", &Blackboard::motion)
-      .def_readonly("localisation", &Blackboard::localisation)
-      .def_readonly("vision", &Blackboard::vision)
-      .def_readonly("gameController", &Blackboard::gameController)
-      .def_readonly("receiver", &Blackboard::receiver)
-      .def_readonly("behaviour", &Blackboard::behaviour);
+  // The Blackboard and its parts: read-only views of their own (blackboard_view.hpp).
+  define_blackboard_views(m);
 }
 
 } // namespace
