@@ -1,6 +1,7 @@
 #include "touchline/python/robot_module.hpp"
 
 #include "touchline/python/blackboard_view.hpp"
+#include "touchline/python/fast_fields.hpp"
 
 #include <pybind11/stl.h>
 
@@ -62,42 +63,45 @@ void define_action_command(py::module_& m) {
       .value("GOALIE_DIVE_RIGHT", AC::ActionType::GOALIE_DIVE_RIGHT);
   py::enum_<AC::Foot>(m, "Foot").value("LEFT", AC::Foot::LEFT).value("RIGHT", AC::Foot::RIGHT);
 
-  py::class_<AC::Head>(m, "Head", "head request: yaw, pitch (rad), isRelative, yawSpeed, pitchSpeed (0..1]")
-      .def(py::init<>())
-      .def_readwrite("yaw", &AC::Head::yaw)
-      .def_readwrite("pitch", &AC::Head::pitch)
-      .def_readwrite("isRelative", &AC::Head::isRelative)
-      .def_readwrite("yawSpeed", &AC::Head::yawSpeed)
-      .def_readwrite("pitchSpeed", &AC::Head::pitchSpeed);
-  py::class_<AC::Body>(m, "Body", "body request: actionType, forward, left (mm/s), turn (rad/s), power, bend, speed, foot")
-      .def(py::init<>())
-      .def_readwrite("actionType", &AC::Body::actionType)
-      .def_readwrite("forward", &AC::Body::forward)
-      .def_readwrite("left", &AC::Body::left)
-      .def_readwrite("turn", &AC::Body::turn)
-      .def_readwrite("power", &AC::Body::power)
-      .def_readwrite("bend", &AC::Body::bend)
-      .def_readwrite("speed", &AC::Body::speed)
-      .def_readwrite("foot", &AC::Body::foot);
-  py::class_<AC::LED>(m, "LED", "LED request: chest (0xRRGGBB)")
-      .def(py::init<>())
-      .def_readwrite("chest", &AC::LED::chest);
-  py::class_<AC::All>(m, "All", "a whole request: head, body, leds, sonar")
-      .def(py::init<>())
-      .def_readwrite("head", &AC::All::head)
-      .def_readwrite("body", &AC::All::body)
-      .def_readwrite("leds", &AC::All::leds)
-      .def_readwrite("sonar", &AC::All::sonar)
-      .def_property(
-          "teamMessage",
-          [](const AC::All& all) {
-            return py::bytes(reinterpret_cast<const char*>(all.teamMessage.data()), all.teamMessage.size());
-          },
-          [](AC::All& all, const py::bytes& data) {
-            const std::string bytes = data;
-            all.teamMessage.assign(bytes.begin(), bytes.end());
-          },
-          "bytes to send to the teammates this frame (b'': none)");
+  // The fields as plain getset descriptors (fast_fields.hpp): a request is built field by
+  // field every tick.
+  namespace ff = fast_fields;
+  py::class_<AC::Head> head(m, "Head", "head request: yaw, pitch (rad), isRelative, yawSpeed, pitchSpeed (0..1]");
+  head.def(py::init<>());
+  ff::readwrite<&AC::Head::yaw>(head, "yaw");
+  ff::readwrite<&AC::Head::pitch>(head, "pitch");
+  ff::readwrite<&AC::Head::isRelative>(head, "isRelative");
+  ff::readwrite<&AC::Head::yawSpeed>(head, "yawSpeed");
+  ff::readwrite<&AC::Head::pitchSpeed>(head, "pitchSpeed");
+  py::class_<AC::Body> body(m, "Body", "body request: actionType, forward, left (mm/s), turn (rad/s), power, bend, speed, foot");
+  body.def(py::init<>());
+  ff::readwrite<&AC::Body::actionType>(body, "actionType");
+  ff::readwrite<&AC::Body::forward>(body, "forward");
+  ff::readwrite<&AC::Body::left>(body, "left");
+  ff::readwrite<&AC::Body::turn>(body, "turn");
+  ff::readwrite<&AC::Body::power>(body, "power");
+  ff::readwrite<&AC::Body::bend>(body, "bend");
+  ff::readwrite<&AC::Body::speed>(body, "speed");
+  ff::readwrite<&AC::Body::foot>(body, "foot");
+  py::class_<AC::LED> leds(m, "LED", "LED request: chest (0xRRGGBB)");
+  leds.def(py::init<>());
+  ff::readwrite<&AC::LED::chest>(leds, "chest");
+  py::class_<AC::All> request(m, "All", "a whole request: head, body, leds, sonar");
+  request.def(py::init<>());
+  ff::readwrite<&AC::All::head>(request, "head");
+  ff::readwrite<&AC::All::body>(request, "body");
+  ff::readwrite<&AC::All::leds>(request, "leds");
+  ff::readwrite<&AC::All::sonar>(request, "sonar");
+  request.def_property(
+      "teamMessage",
+      [](const AC::All& all) {
+        return py::bytes(reinterpret_cast<const char*>(all.teamMessage.data()), all.teamMessage.size());
+      },
+      [](AC::All& all, const py::bytes& data) {
+        const std::string bytes = data;
+        all.teamMessage.assign(bytes.begin(), bytes.end());
+      },
+      "bytes to send to the teammates this frame (b'': none)");
 }
 
 void define_blackboard(py::module_& m) {
