@@ -7,7 +7,9 @@
 // port-regression test does) and reports the Team skill's mean tick, Python and C++ (the
 // figure a match's behaviour_cpu_us_mean shows); --requests PATH writes every Python
 // request of that replay, floats in hex, so that a change to the tick's cost can be shown
-// to leave what the behaviour decides bit for bit as it was (diff two files).
+// to leave what the behaviour decides bit for bit as it was (diff two files); --cold MIB
+// writes that much memory between two ticks of the replay, as the other processes of a match
+// sharing the cores do to the caches (a match's tick costs several times a warm one).
 // Prints median and p90 per tick in microseconds; --json PATH writes them.
 #include <pybind11/embed.h>
 
@@ -134,7 +136,8 @@ double thread_cpu_us() {
 /// Every corpus run, `rounds` times, each with fresh behaviours, timed in thread CPU time;
 /// the first round's Python requests to `requests` when it is open.
 Replay replay_corpus(const std::vector<RobotRun>& runs, const python::PythonBehaviourDef& runtime, int rounds,
-                     std::ostream* requests) {
+                     std::ostream* requests, size_t evict_bytes) {
+  std::vector<uint8_t> evict(evict_bytes);
   std::vector<double> team_py, team_cpp, all_py;
   Replay replay;
   for (int round = 0; round < rounds; ++round) {
@@ -148,6 +151,8 @@ Replay replay_corpus(const std::vector<RobotRun>& runs, const python::PythonBeha
       auto cpp = apps::make_behaviour(cpp_robot);
       const bool team = run.params.count("skill") && run.params.at("skill") == "Team";
       for (size_t i = 0; i < run.frames.size(); ++i) {
+        // --cold: what the other processes of a match do to the caches between two ticks.
+        for (size_t at = 0; at < evict.size(); at += 64) evict[at] = static_cast<uint8_t>(evict[at] + i);
         const double start = thread_cpu_us();
         const api::ActionCommand::All request = py->tick(run.frames[i]);
         const double us = thread_cpu_us() - start;
@@ -196,6 +201,7 @@ int main(int argc, char** argv) {
   std::string runswift_dir;
   std::string requests_path;
   int rounds = 5;
+  size_t evict_bytes = 0;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--json" && i + 1 < argc) {
@@ -204,10 +210,12 @@ int main(int argc, char** argv) {
       runswift_dir = argv[++i];
     } else if (arg == "--requests" && i + 1 < argc) {
       requests_path = argv[++i];
+    } else if (arg == "--cold" && i + 1 < argc) {
+      evict_bytes = static_cast<size_t>(std::max(0, std::atoi(argv[++i]))) << 20;
     } else if (arg == "--rounds" && i + 1 < argc) {
       rounds = std::max(1, std::atoi(argv[++i]));
     } else {
-      std::cerr << "touchline_behaviour_bench: unknown argument '" << arg << "' (options: --json PATH, --rounds N, --requests PATH, --runswift-dir DIR)\n";
+      std::cerr << "touchline_behaviour_bench: unknown argument '" << arg << "' (options: --json PATH, --rounds N, --requests PATH, --cold MIB, --runswift-dir DIR)\n";
       return 2;
     }
   }
@@ -233,7 +241,7 @@ int main(int argc, char** argv) {
       if (!requests_file) throw std::runtime_error("cannot write " + requests_path);
     }
     const auto runs = corpus_runs(TOUCHLINE_CORPUS);
-    const Replay replay = replay_corpus(runs, runtime, rounds, requests_path.empty() ? nullptr : &requests_file);
+    const Replay replay = replay_corpus(runs, runtime, rounds, requests_path.empty() ? nullptr : &requests_file, evict_bytes);
     if (requests_file.is_open() && !requests_file.flush()) throw std::runtime_error("cannot write " + requests_path);
     // The rUNSWift profile, as robot_shim --behaviour runswift makes it.
     auto runswift = [&](const std::string& dir, const std::string& skill, const std::string& headskill) {
@@ -258,7 +266,9 @@ int main(int argc, char** argv) {
               << "  c++ port                           median " << cpp_figures.median_us << " us, p90 "
               << cpp_figures.p90_us << " us\n"
               << "behaviour tick, Team, " << replay.team_frames << " corpus frames x " << rounds
-              << " rounds (every run replayed in order by a fresh behaviour; thread CPU time per tick)\n"
+              << " rounds (every run replayed in order by a fresh behaviour; thread CPU time per tick"
+              << (evict_bytes ? ", " + std::to_string(evict_bytes >> 20) + " MiB written between ticks" : std::string())
+              << ")\n"
               << "  python (embedded, behaviour.tick)  mean " << replay.team_python.mean_us << " us, median "
               << replay.team_python.median_us << " us, p90 " << replay.team_python.p90_us << " us\n"
               << "  c++ port                           mean " << replay.team_cpp.mean_us << " us, median "

@@ -50,8 +50,8 @@ void define_data(py::module_& m) {
 }
 
 void define_action_command(py::module_& m) {
-  py::enum_<AC::ActionType>(m, "ActionType")
-      .value("NONE", AC::ActionType::NONE)
+  py::enum_<AC::ActionType> action_type(m, "ActionType");
+  action_type.value("NONE", AC::ActionType::NONE)
       .value("STAND", AC::ActionType::STAND)
       .value("WALK", AC::ActionType::WALK)
       .value("DRIBBLE", AC::ActionType::DRIBBLE)
@@ -61,7 +61,10 @@ void define_action_command(py::module_& m) {
       .value("DEAD", AC::ActionType::DEAD)
       .value("GOALIE_DIVE_LEFT", AC::ActionType::GOALIE_DIVE_LEFT)
       .value("GOALIE_DIVE_RIGHT", AC::ActionType::GOALIE_DIVE_RIGHT);
-  py::enum_<AC::Foot>(m, "Foot").value("LEFT", AC::Foot::LEFT).value("RIGHT", AC::Foot::RIGHT);
+  py::enum_<AC::Foot> foot(m, "Foot");
+  foot.value("LEFT", AC::Foot::LEFT).value("RIGHT", AC::Foot::RIGHT);
+  fast_fields::fast_compare(action_type); // == and != without pybind11's dispatch
+  fast_fields::fast_compare(foot);
 
   // The fields as plain getset descriptors (fast_fields.hpp): a request is built field by
   // field every tick.
@@ -105,27 +108,27 @@ void define_action_command(py::module_& m) {
 }
 
 void define_blackboard(py::module_& m) {
-  py::enum_<GameState>(m, "GameState")
-      .value("INITIAL", GameState::INITIAL)
+  py::enum_<GameState> game_state(m, "GameState");
+  game_state.value("INITIAL", GameState::INITIAL)
       .value("READY", GameState::READY)
       .value("SET", GameState::SET)
       .value("PLAYING", GameState::PLAYING)
       .value("FINISHED", GameState::FINISHED)
       .value("STANDBY", GameState::STANDBY);
-  py::enum_<SetPlay>(m, "SetPlay")
-      .value("NONE", SetPlay::NONE)
+  py::enum_<SetPlay> set_play(m, "SetPlay");
+  set_play.value("NONE", SetPlay::NONE)
       .value("GOAL_KICK", SetPlay::GOAL_KICK)
       .value("PUSHING_FREE_KICK", SetPlay::PUSHING_FREE_KICK)
       .value("CORNER_KICK", SetPlay::CORNER_KICK)
       .value("KICK_IN", SetPlay::KICK_IN)
       .value("PENALTY_KICK", SetPlay::PENALTY_KICK);
+  fast_fields::fast_compare(game_state); // compared every tick
+  fast_fields::fast_compare(set_play);
 
-  py::class_<TeamMessage>(m, "TeamMessage")
-      .def_readonly("playerNumber", &TeamMessage::playerNumber)
-      .def_readonly("utime", &TeamMessage::utime)
-      .def_property_readonly("data", [](const TeamMessage& t) {
-        return py::bytes(reinterpret_cast<const char*>(t.data.data()), t.data.size());
-      });
+  py::class_<TeamMessage> message(m, "TeamMessage");
+  fast_fields::readonly<&TeamMessage::playerNumber>(message, "playerNumber");
+  fast_fields::readonly<&TeamMessage::utime>(message, "utime");
+  fast_fields::readonly<&TeamMessage::data>(message, "data", "the message's bytes (a copy)");
   // The Blackboard and its parts: read-only views of their own (blackboard_view.hpp).
   define_blackboard_views(m);
 }

@@ -11,9 +11,11 @@
 #include <pybind11/pybind11.h>
 
 #include <cstdint>
+#include <initializer_list>
 #include <limits>
 #include <stdexcept>
 #include <type_traits>
+#include <vector>
 
 namespace touchline::python::fast_fields {
 
@@ -38,6 +40,10 @@ T* held(PyObject* self) {
 inline PyObject* read(float v, PyObject*) { return PyFloat_FromDouble(static_cast<double>(v)); }
 inline PyObject* read(bool v, PyObject*) { return PyBool_FromLong(v); }
 inline PyObject* read(int32_t v, PyObject*) { return PyLong_FromLong(v); }
+inline PyObject* read(int64_t v, PyObject*) { return PyLong_FromLongLong(v); }
+inline PyObject* read(const std::vector<uint8_t>& v, PyObject*) { // bytes, a copy
+  return PyBytes_FromStringAndSize(reinterpret_cast<const char*>(v.data()), static_cast<Py_ssize_t>(v.size()));
+}
 template <typename T>
 PyObject* read(const T& v, PyObject* owner) {
   if constexpr (std::is_enum_v<T>) {
@@ -133,6 +139,38 @@ void readwrite(Class& cls, const char* name, const char* doc = nullptr) {
   PyObject* descriptor = PyDescr_NewGetSet(reinterpret_cast<PyTypeObject*>(cls.ptr()), &def);
   if (!descriptor) throw pybind11::error_already_set();
   cls.attr(name) = pybind11::reinterpret_steal<pybind11::object>(descriptor);
+}
+
+/// cls.name as a read-only attribute of Member.
+template <auto Member, typename Class>
+void readonly(Class& cls, const char* name, const char* doc = nullptr) {
+  static PyGetSetDef def{name, &get<Member>, nullptr, doc, nullptr};
+  PyObject* descriptor = PyDescr_NewGetSet(reinterpret_cast<PyTypeObject*>(cls.ptr()), &def);
+  if (!descriptor) throw pybind11::error_already_set();
+  cls.attr(name) = pybind11::reinterpret_steal<pybind11::object>(descriptor);
+}
+
+/// pybind11's == and != of a scoped enum (true when both are the same enum type with the same
+/// value; an int or another enum is never equal) as C methods: a behaviour compares the game
+/// state every tick, and pybind11's own calls __int__ through its dispatch twice per compare.
+template <typename Enum, bool equal>
+PyObject* enum_compare(PyObject* self, PyObject* other) {
+  if (Py_TYPE(self) != Py_TYPE(other)) return PyBool_FromLong(!equal);
+  const Enum* a = held<Enum>(self);
+  const Enum* b = a ? held<Enum>(other) : nullptr;
+  if (!b) return nullptr;
+  return PyBool_FromLong((*a == *b) == equal);
+}
+
+template <typename Enum>
+void fast_compare(pybind11::enum_<Enum>& cls) {
+  static PyMethodDef eq{"__eq__", reinterpret_cast<PyCFunction>(&enum_compare<Enum, true>), METH_O, nullptr};
+  static PyMethodDef ne{"__ne__", reinterpret_cast<PyCFunction>(&enum_compare<Enum, false>), METH_O, nullptr};
+  for (PyMethodDef* def : {&eq, &ne}) {
+    PyObject* descriptor = PyDescr_NewMethod(reinterpret_cast<PyTypeObject*>(cls.ptr()), def);
+    if (!descriptor) throw pybind11::error_already_set();
+    cls.attr(def->ml_name) = pybind11::reinterpret_steal<pybind11::object>(descriptor);
+  }
 }
 
 } // namespace touchline::python::fast_fields
