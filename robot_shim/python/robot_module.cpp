@@ -71,6 +71,7 @@ void define_action_command(py::module_& m) {
   namespace ff = fast_fields;
   py::class_<AC::Head> head(m, "Head", "head request: yaw, pitch (rad), isRelative, yawSpeed, pitchSpeed (0..1]");
   head.def(py::init<>());
+  ff::fast_default_init<AC::Head>(head);
   ff::readwrite<&AC::Head::yaw>(head, "yaw");
   ff::readwrite<&AC::Head::pitch>(head, "pitch");
   ff::readwrite<&AC::Head::isRelative>(head, "isRelative");
@@ -78,6 +79,7 @@ void define_action_command(py::module_& m) {
   ff::readwrite<&AC::Head::pitchSpeed>(head, "pitchSpeed");
   py::class_<AC::Body> body(m, "Body", "body request: actionType, forward, left (mm/s), turn (rad/s), power, bend, speed, foot");
   body.def(py::init<>());
+  ff::fast_default_init<AC::Body>(body);
   ff::readwrite<&AC::Body::actionType>(body, "actionType");
   ff::readwrite<&AC::Body::forward>(body, "forward");
   ff::readwrite<&AC::Body::left>(body, "left");
@@ -88,9 +90,11 @@ void define_action_command(py::module_& m) {
   ff::readwrite<&AC::Body::foot>(body, "foot");
   py::class_<AC::LED> leds(m, "LED", "LED request: chest (0xRRGGBB)");
   leds.def(py::init<>());
+  ff::fast_default_init<AC::LED>(leds);
   ff::readwrite<&AC::LED::chest>(leds, "chest");
   py::class_<AC::All> request(m, "All", "a whole request: head, body, leds, sonar");
   request.def(py::init<>());
+  ff::fast_default_init<AC::All>(request);
   ff::readwrite<&AC::All::head>(request, "head");
   ff::readwrite<&AC::All::body>(request, "body");
   ff::readwrite<&AC::All::leds>(request, "leds");

@@ -15,6 +15,7 @@
 #include <limits>
 #include <stdexcept>
 #include <type_traits>
+#include <typeinfo>
 #include <vector>
 
 namespace touchline::python::fast_fields {
@@ -139,6 +140,55 @@ void readwrite(Class& cls, const char* name, const char* doc = nullptr) {
   PyObject* descriptor = PyDescr_NewGetSet(reinterpret_cast<PyTypeObject*>(cls.ptr()), &def);
   if (!descriptor) throw pybind11::error_already_set();
   cls.attr(name) = pybind11::reinterpret_steal<pybind11::object>(descriptor);
+}
+
+/// T() as __init__ of its pybind11 class, without pybind11's dispatch: what py::init<>()
+/// does (a new T held by the instance, registered with pybind11), for requests a behaviour
+/// builds several of every tick. A second __init__ on the same instance does nothing, as
+/// in pybind11.
+/// pybind11's record of T, set when its class is defined (again in a new interpreter).
+template <typename T>
+pybind11::detail::type_info*& type_record() {
+  static pybind11::detail::type_info* record = nullptr;
+  return record;
+}
+
+template <typename T>
+PyObject* default_init(PyObject* self, PyObject* args, PyObject* kwargs) {
+  if (PyTuple_GET_SIZE(args) != 0 || (kwargs && PyDict_GET_SIZE(kwargs) != 0)) {
+    PyErr_Format(PyExc_TypeError, "%s() takes no arguments", Py_TYPE(self)->tp_name);
+    return nullptr;
+  }
+  auto* inst = reinterpret_cast<pybind11::detail::instance*>(self);
+  try {
+    pybind11::detail::value_and_holder holder = inst->get_value_and_holder(type_record<T>());
+    if (!holder.type || !holder.inst) {
+      PyErr_SetString(PyExc_TypeError, "__init__ on an object that is not an instance of its class");
+      return nullptr;
+    }
+    if (!holder.instance_registered()) {
+      holder.value_ptr() = new T();
+      holder.type->init_instance(inst, nullptr);
+    }
+  } catch (pybind11::error_already_set& e) {
+    e.restore();
+    return nullptr;
+  } catch (const std::exception& e) {
+    PyErr_SetString(PyExc_RuntimeError, e.what());
+    return nullptr;
+  }
+  Py_RETURN_NONE;
+}
+
+template <typename T, typename Class>
+void fast_default_init(Class& cls) {
+  type_record<T>() = pybind11::detail::get_type_info(typeid(T));
+  if (!type_record<T>()) throw std::logic_error("fast_default_init before the class is defined");
+  static PyMethodDef def{"__init__", reinterpret_cast<PyCFunction>(reinterpret_cast<void (*)()>(&default_init<T>)),
+                         METH_VARARGS | METH_KEYWORDS, "a default request part"};
+  PyObject* descriptor = PyDescr_NewMethod(reinterpret_cast<PyTypeObject*>(cls.ptr()), &def);
+  if (!descriptor) throw pybind11::error_already_set();
+  cls.attr("__init__") = pybind11::reinterpret_steal<pybind11::object>(descriptor);
 }
 
 /// cls.name as a read-only attribute of Member.
