@@ -10,6 +10,7 @@
 #include <pybind11/embed.h>
 #include <pybind11/stl.h>
 
+#include "touchline/python/blackboard_view.hpp"
 #include "touchline/python/python_profile.hpp"
 #include "touchline/python/robot_module.hpp"
 #include "touchline/python/tick_guard.hpp"
@@ -76,7 +77,7 @@ class TouchlineProfile final : public PythonProfile {
  public:
   py::module_ robot_module() override { return py::module_::import("robot"); }
   py::object argument(const api::Blackboard& blackboard) override {
-    return py::cast(&blackboard, py::return_value_policy::reference);
+    return blackboard_view(blackboard);
   }
   AC::All request(py::handle result, const api::Blackboard&) override {
     if (!py::isinstance<AC::All>(result))

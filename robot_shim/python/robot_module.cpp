@@ -1,5 +1,8 @@
 #include "touchline/python/robot_module.hpp"
 
+#include "touchline/python/blackboard_view.hpp"
+#include "touchline/python/fast_fields.hpp"
+
 #include <pybind11/stl.h>
 
 #include "touchline/robot_api/blackboard.hpp"
@@ -13,13 +16,6 @@ namespace {
 
 using namespace api;
 namespace AC = api::ActionCommand;
-
-/// A read-only attribute that hands Python a copy: a reference would let behaviour code
-/// write through nested values (blackboard.localisation.robotPos.x = ...).
-template <typename Class, typename Value>
-void copy_readonly(py::class_<Class>& cls, const char* name, Value Class::*member) {
-  cls.def_property_readonly(name, [member](const Class& self) { return self.*member; });
-}
 
 void define_geometry(py::module_& m) {
   py::class_<AbsCoord>(m, "AbsCoord", "A field or odometry pose: x, y (mm), theta (rad)")
@@ -54,8 +50,8 @@ void define_data(py::module_& m) {
 }
 
 void define_action_command(py::module_& m) {
-  py::enum_<AC::ActionType>(m, "ActionType")
-      .value("NONE", AC::ActionType::NONE)
+  py::enum_<AC::ActionType> action_type(m, "ActionType");
+  action_type.value("NONE", AC::ActionType::NONE)
       .value("STAND", AC::ActionType::STAND)
       .value("WALK", AC::ActionType::WALK)
       .value("DRIBBLE", AC::ActionType::DRIBBLE)
@@ -65,114 +61,80 @@ void define_action_command(py::module_& m) {
       .value("DEAD", AC::ActionType::DEAD)
       .value("GOALIE_DIVE_LEFT", AC::ActionType::GOALIE_DIVE_LEFT)
       .value("GOALIE_DIVE_RIGHT", AC::ActionType::GOALIE_DIVE_RIGHT);
-  py::enum_<AC::Foot>(m, "Foot").value("LEFT", AC::Foot::LEFT).value("RIGHT", AC::Foot::RIGHT);
+  py::enum_<AC::Foot> foot(m, "Foot");
+  foot.value("LEFT", AC::Foot::LEFT).value("RIGHT", AC::Foot::RIGHT);
+  fast_fields::fast_compare(action_type); // == and != without pybind11's dispatch
+  fast_fields::fast_compare(foot);
 
-  py::class_<AC::Head>(m, "Head", "head request: yaw, pitch (rad), isRelative, yawSpeed, pitchSpeed (0..1]")
-      .def(py::init<>())
-      .def_readwrite("yaw", &AC::Head::yaw)
-      .def_readwrite("pitch", &AC::Head::pitch)
-      .def_readwrite("isRelative", &AC::Head::isRelative)
-      .def_readwrite("yawSpeed", &AC::Head::yawSpeed)
-      .def_readwrite("pitchSpeed", &AC::Head::pitchSpeed);
-  py::class_<AC::Body>(m, "Body", "body request: actionType, forward, left (mm/s), turn (rad/s), power, bend, speed, foot")
-      .def(py::init<>())
-      .def_readwrite("actionType", &AC::Body::actionType)
-      .def_readwrite("forward", &AC::Body::forward)
-      .def_readwrite("left", &AC::Body::left)
-      .def_readwrite("turn", &AC::Body::turn)
-      .def_readwrite("power", &AC::Body::power)
-      .def_readwrite("bend", &AC::Body::bend)
-      .def_readwrite("speed", &AC::Body::speed)
-      .def_readwrite("foot", &AC::Body::foot);
-  py::class_<AC::LED>(m, "LED", "LED request: chest (0xRRGGBB)")
-      .def(py::init<>())
-      .def_readwrite("chest", &AC::LED::chest);
-  py::class_<AC::All>(m, "All", "a whole request: head, body, leds, sonar")
-      .def(py::init<>())
-      .def_readwrite("head", &AC::All::head)
-      .def_readwrite("body", &AC::All::body)
-      .def_readwrite("leds", &AC::All::leds)
-      .def_readwrite("sonar", &AC::All::sonar)
-      .def_property(
-          "teamMessage",
-          [](const AC::All& all) {
-            return py::bytes(reinterpret_cast<const char*>(all.teamMessage.data()), all.teamMessage.size());
-          },
-          [](AC::All& all, const py::bytes& data) {
-            const std::string bytes = data;
-            all.teamMessage.assign(bytes.begin(), bytes.end());
-          },
-          "bytes to send to the teammates this frame (b'': none)");
+  // The fields as plain getset descriptors (fast_fields.hpp): a request is built field by
+  // field every tick.
+  namespace ff = fast_fields;
+  py::class_<AC::Head> head(m, "Head", "head request: yaw, pitch (rad), isRelative, yawSpeed, pitchSpeed (0..1]");
+  head.def(py::init<>());
+  ff::fast_default_init<AC::Head>(head);
+  ff::readwrite<&AC::Head::yaw>(head, "yaw");
+  ff::readwrite<&AC::Head::pitch>(head, "pitch");
+  ff::readwrite<&AC::Head::isRelative>(head, "isRelative");
+  ff::readwrite<&AC::Head::yawSpeed>(head, "yawSpeed");
+  ff::readwrite<&AC::Head::pitchSpeed>(head, "pitchSpeed");
+  py::class_<AC::Body> body(m, "Body", "body request: actionType, forward, left (mm/s), turn (rad/s), power, bend, speed, foot");
+  body.def(py::init<>());
+  ff::fast_default_init<AC::Body>(body);
+  ff::readwrite<&AC::Body::actionType>(body, "actionType");
+  ff::readwrite<&AC::Body::forward>(body, "forward");
+  ff::readwrite<&AC::Body::left>(body, "left");
+  ff::readwrite<&AC::Body::turn>(body, "turn");
+  ff::readwrite<&AC::Body::power>(body, "power");
+  ff::readwrite<&AC::Body::bend>(body, "bend");
+  ff::readwrite<&AC::Body::speed>(body, "speed");
+  ff::readwrite<&AC::Body::foot>(body, "foot");
+  py::class_<AC::LED> leds(m, "LED", "LED request: chest (0xRRGGBB)");
+  leds.def(py::init<>());
+  ff::fast_default_init<AC::LED>(leds);
+  ff::readwrite<&AC::LED::chest>(leds, "chest");
+  py::class_<AC::All> request(m, "All", "a whole request: head, body, leds, sonar");
+  request.def(py::init<>());
+  ff::fast_default_init<AC::All>(request);
+  ff::readwrite<&AC::All::head>(request, "head");
+  ff::readwrite<&AC::All::body>(request, "body");
+  ff::readwrite<&AC::All::leds>(request, "leds");
+  ff::readwrite<&AC::All::sonar>(request, "sonar");
+  request.def_property(
+      "teamMessage",
+      [](const AC::All& all) {
+        return py::bytes(reinterpret_cast<const char*>(all.teamMessage.data()), all.teamMessage.size());
+      },
+      [](AC::All& all, const py::bytes& data) {
+        const std::string bytes = data;
+        all.teamMessage.assign(bytes.begin(), bytes.end());
+      },
+      "bytes to send to the teammates this frame (b'': none)");
 }
 
 void define_blackboard(py::module_& m) {
-  py::enum_<GameState>(m, "GameState")
-      .value("INITIAL", GameState::INITIAL)
+  py::enum_<GameState> game_state(m, "GameState");
+  game_state.value("INITIAL", GameState::INITIAL)
       .value("READY", GameState::READY)
       .value("SET", GameState::SET)
       .value("PLAYING", GameState::PLAYING)
       .value("FINISHED", GameState::FINISHED)
       .value("STANDBY", GameState::STANDBY);
-  py::enum_<SetPlay>(m, "SetPlay")
-      .value("NONE", SetPlay::NONE)
+  py::enum_<SetPlay> set_play(m, "SetPlay");
+  set_play.value("NONE", SetPlay::NONE)
       .value("GOAL_KICK", SetPlay::GOAL_KICK)
       .value("PUSHING_FREE_KICK", SetPlay::PUSHING_FREE_KICK)
       .value("CORNER_KICK", SetPlay::CORNER_KICK)
       .value("KICK_IN", SetPlay::KICK_IN)
       .value("PENALTY_KICK", SetPlay::PENALTY_KICK);
+  fast_fields::fast_compare(game_state); // compared every tick
+  fast_fields::fast_compare(set_play);
 
-  // Read-only views: behaviour code reads the Blackboard, only adapters write it.
-  py::class_<MotionBlackboard> motion(m, "MotionBlackboard");
-  copy_readonly(motion, "odometry", &MotionBlackboard::odometry);
-  copy_readonly(motion, "active", &MotionBlackboard::active);
-  motion.def_readonly("headYaw", &MotionBlackboard::headYaw)
-      .def_readonly("headPitch", &MotionBlackboard::headPitch)
-      .def_readonly("standing", &MotionBlackboard::standing)
-      .def_readonly("kickPhase", &MotionBlackboard::kickPhase)
-      .def_readonly("fallen", &MotionBlackboard::fallen)
-      .def_readonly("ticks", &MotionBlackboard::ticks);
-
-  py::class_<LocalisationBlackboard> localisation(m, "LocalisationBlackboard");
-  copy_readonly(localisation, "robotPos", &LocalisationBlackboard::robotPos);
-  copy_readonly(localisation, "ballPos", &LocalisationBlackboard::ballPos);
-  copy_readonly(localisation, "ballPosRR", &LocalisationBlackboard::ballPosRR);
-  copy_readonly(localisation, "teamBallPos", &LocalisationBlackboard::teamBallPos);
-  localisation.def_readonly("ballLostCount", &LocalisationBlackboard::ballLostCount);
-
-  py::class_<VisionBlackboard> vision(m, "VisionBlackboard");
-  copy_readonly(vision, "ball", &VisionBlackboard::ball);
-  vision.def_readonly("ballSeen", &VisionBlackboard::ballSeen).def_readonly("frame", &VisionBlackboard::frame);
-
-  py::class_<GameControllerBlackboard>(m, "GameControllerBlackboard")
-      .def_readonly("state", &GameControllerBlackboard::state)
-      .def_readonly("team", &GameControllerBlackboard::team)
-      .def_readonly("playerNumber", &GameControllerBlackboard::playerNumber)
-      .def_readonly("penalised", &GameControllerBlackboard::penalised)
-      .def_readonly("score", &GameControllerBlackboard::score)
-      .def_readonly("secsRemaining", &GameControllerBlackboard::secsRemaining)
-      .def_readonly("setPlay", &GameControllerBlackboard::setPlay)
-      .def_readonly("setPlayTeam", &GameControllerBlackboard::setPlayTeam);
-  py::class_<TeamMessage>(m, "TeamMessage")
-      .def_readonly("playerNumber", &TeamMessage::playerNumber)
-      .def_readonly("utime", &TeamMessage::utime)
-      .def_property_readonly("data", [](const TeamMessage& t) {
-        return py::bytes(reinterpret_cast<const char*>(t.data.data()), t.data.size());
-      });
-  py::class_<ReceiverBlackboard>(m, "ReceiverBlackboard").def_readonly("messages", &ReceiverBlackboard::messages);
-
-  py::class_<BehaviourBlackboard> behaviour(m, "BehaviourBlackboard");
-  copy_readonly(behaviour, "request", &BehaviourBlackboard::request);
-  behaviour.def_readonly("skill", &BehaviourBlackboard::skill);
-
-  py::class_<Blackboard>(m, "Blackboard", "the robot's Blackboard, read-only")
-      .def(py::init<>()) // empty boards, for tests of behaviour code
-      .def_readonly("utime", &Blackboard::utime)
-      .def_readonly("motion", &Blackboard::motion)
-      .def_readonly("localisation", &Blackboard::localisation)
-      .def_readonly("vision", &Blackboard::vision)
-      .def_readonly("gameController", &Blackboard::gameController)
-      .def_readonly("receiver", &Blackboard::receiver)
-      .def_readonly("behaviour", &Blackboard::behaviour);
+  py::class_<TeamMessage> message(m, "TeamMessage");
+  fast_fields::readonly<&TeamMessage::playerNumber>(message, "playerNumber");
+  fast_fields::readonly<&TeamMessage::utime>(message, "utime");
+  fast_fields::readonly<&TeamMessage::data>(message, "data", "the message's bytes (a copy)");
+  // The Blackboard and its parts: read-only views of their own (blackboard_view.hpp).
+  define_blackboard_views(m);
 }
 
 } // namespace

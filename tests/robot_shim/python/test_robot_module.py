@@ -22,3 +22,44 @@ def test_an_empty_board_has_no_set_play_and_its_fields_are_read_only():
     except AttributeError:
         return
     raise AssertionError("gameController.setPlayTeam is writable")
+
+
+def test_enums_compare_by_type_and_value_only():
+    state = robot.Blackboard().gameController.state
+    assert state == robot.GameState.INITIAL and not state != robot.GameState.INITIAL
+    assert state != robot.GameState.READY and not state == robot.GameState.READY
+    assert state != 0 and not state == 0  # no int is a game state
+    assert robot.SetPlay.NONE != robot.GameState.INITIAL  # nor is another enum's value of the same number
+    assert {robot.GameState.INITIAL: "initial"}[state] == "initial"
+
+
+def test_an_empty_boards_parts_are_read_only_and_nested_values_are_copies():
+    board = robot.Blackboard()
+    for part, field in (("motion", "fallen"), ("localisation", "ballLostCount"), ("vision", "ballSeen"),
+                        ("receiver", "messages"), ("behaviour", "skill")):
+        try:
+            setattr(getattr(board, part), field, None)
+        except AttributeError:
+            continue
+        raise AssertionError(part + "." + field + " is writable")
+    pos = board.localisation.robotPos
+    pos.x = 5.0
+    assert board.localisation.robotPos.x == 0.0
+    assert board.receiver.messages == [] and board.behaviour.skill == ""
+
+
+def test_requests_are_built_field_by_field_and_take_no_constructor_arguments():
+    body = robot.Body()
+    body.forward = 120  # an int converts as to a C float
+    body.actionType = robot.ActionType.WALK
+    request = robot.All()
+    request.body = body
+    request.body.turn = 0.5  # a reference into the request, as pybind11's def_readwrite gives
+    assert (request.body.forward, request.body.turn, request.body.actionType) == (120.0, 0.5, robot.ActionType.WALK)
+    for bad in (lambda: setattr(body, "forward", "fast"), lambda: setattr(body, "actionType", 2),
+                lambda: robot.Body(1), lambda: setattr(robot.LED(), "chest", 1.5)):
+        try:
+            bad()
+        except TypeError:
+            continue
+        raise AssertionError("accepted a wrong value")
