@@ -109,9 +109,10 @@ class MatchEnv(ParallelEnv):
     def commands(self, actions):
         """The robot API requests, (n, 5): forward mm/s, left mm/s, turn rad/s, kick power, head
         yaw rad, for actions (n, 5) in [-1, 1] (clipped there first)."""
-        a = np.clip(np.asarray(actions, dtype=np.float32).reshape(-1, 5), -1.0, 1.0) * self._scale
+        # The ufuncs, not np.clip: on a few rows its wrapper costs more than the simulator's step.
+        a = np.minimum(np.maximum(np.asarray(actions, dtype=np.float32).reshape(-1, 5), -1.0), 1.0) * self._scale
         a[:, 0] *= np.where(a[:, 0] >= 0, self._scale_forward[0], self._scale_forward[1])
-        a[:, 3] = np.maximum(a[:, 3], 0.0)
+        np.maximum(a[:, 3], 0.0, out=a[:, 3])
         return a
 
     def step(self, actions):
@@ -148,7 +149,7 @@ class MatchEnv(ParallelEnv):
         pass
 
     def _observations(self):
-        obs = np.clip(self.sim.observations(), self._low, self._high)
+        obs = np.minimum(np.maximum(self.sim.observations(), self._low), self._high)
         return {agent: obs[i] for i, agent in enumerate(self.possible_agents)}
 
     def _match_state(self):
