@@ -1,16 +1,23 @@
 """Parallel rollouts of the multi-agent match environment with Ray: each episode one Ray task
 (one process of the local or remote cluster), so n episodes take about n / cores times one.
 
-  import ray; ray.init()
   from touchline_rl.rollouts import rollouts, random_policy
-  results = rollouts(8, seed=1, policy=random_policy, env_kwargs={"team_size": 2})
+  results = rollouts(8, seed=1, policy=random_policy, env_kwargs={"team_size": 2}, address="local", workers=4)
 
-Workers import touchline_rl and the touchline_sim extension as the driver does: start Ray with
-PYTHONPATH naming learning/ and the extension's folder (bench/env_steps and the tests do).
+Workers import touchline_rl and the touchline_sim extension as the driver does: rollouts()
+gives a Ray it starts (address "local" or a cluster's) the PYTHONPATH for it (runtime_env());
+start your own Ray with it. learning/rollouts plays matches so from the command line.
 """
+import argparse
+import json
+import os
+import time
+from pathlib import Path
+
 import numpy as np
 
 from touchline_rl.multi_agent import MatchEnv
+from touchline_rl.native import REPO, touchline_sim
 
 
 def random_policy(agent, observation, rng):
@@ -49,10 +56,71 @@ def episode(seed, policy, env_kwargs=None):
             "terminated": terminated, "state_hash": env.state_hash()}
 
 
-def rollouts(n, seed, policy, env_kwargs=None):
-    """`n` episodes seeded seed, seed + 1, ..., each in its own Ray task (ray.init() first);
-    their summaries (see episode()) in seed order."""
+def runtime_env():
+    """What a Ray worker needs to import touchline_rl and the touchline_sim extension as this
+    process does: PYTHONPATH naming learning/ and the extension's folder."""
+    paths = [str(REPO / "learning"), str(Path(touchline_sim.__file__).parent), os.environ.get("PYTHONPATH", "")]
+    return {"env_vars": {"PYTHONPATH": os.pathsep.join(p for p in paths if p)}}
+
+
+def rollouts(n, seed, policy, env_kwargs=None, address=None, workers=2):
+    """`n` episodes seeded seed, seed + 1, ..., each in its own Ray task; their summaries (see
+    episode()) in seed order. address: None, the Ray this process already started (ray.init());
+    "local", a Ray instance started here with `workers` CPUs; else a cluster's address (every
+    machine needs this tree, built, at the same path), as tools/sweep --ray takes. A Ray
+    started here is shut down before returning."""
     import ray
 
-    task = ray.remote(episode)
-    return ray.get([task.remote(seed + i, policy, env_kwargs) for i in range(n)])
+    started = address is not None
+    if address == "local":
+        ray.init(num_cpus=workers, include_dashboard=False, log_to_driver=False, runtime_env=runtime_env())
+    elif started:
+        ray.init(address=address, log_to_driver=False, runtime_env=runtime_env())
+    try:
+        task = ray.remote(num_cpus=1, max_retries=0)(episode)
+        return ray.get([task.remote(seed + i, policy, env_kwargs) for i in range(n)])
+    finally:
+        if started:
+            ray.shutdown()
+
+
+POLICIES = {"random": random_policy, "chase_ball": chase_ball_policy}
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description="Multi-agent matches (MatchEnv) in Ray tasks, one a match.")
+    parser.add_argument("--episodes", type=int, default=4, help="matches to play (default 4)")
+    parser.add_argument("--seed", type=int, default=1, help="the first match's seed; the next ones count up")
+    parser.add_argument("--policy", choices=sorted(POLICIES), default="chase_ball", help="every agent's policy")
+    parser.add_argument("--team-size", type=int, default=2, help="robots a team (default 2)")
+    parser.add_argument("--set", action="append", default=[], metavar="SECTION.KEY=VALUE",
+                        help="a world config override (repeatable), e.g. rules.half_s=60")
+    parser.add_argument("--max-cycles", type=int, help="truncate each match after this many steps")
+    parser.add_argument("--ray", default="local", metavar="ADDRESS",
+                        help="'local' (default): a Ray instance here; else a cluster's address")
+    parser.add_argument("--workers", type=int, default=2, help="CPUs of the local Ray instance (default 2)")
+    parser.add_argument("--json", help="also write the summaries here")
+    args = parser.parse_args(argv)
+    if args.episodes < 1 or args.workers < 1 or args.team_size < 1:
+        parser.error("--episodes, --workers and --team-size must be at least 1")
+    env_kwargs = {"team_size": args.team_size, "overrides": args.set, "max_cycles": args.max_cycles}
+    try:
+        MatchEnv(**env_kwargs)  # a bad override: one line here, not a failed task in every worker
+    except ValueError as error:
+        parser.error(str(error))
+    start = time.perf_counter()
+    results = rollouts(args.episodes, args.seed, POLICIES[args.policy], env_kwargs, args.ray, args.workers)
+    wall_s = time.perf_counter() - start
+    for r in results:
+        team0 = sum(v for k, v in r["returns"].items() if k.startswith("team0"))
+        print(f"seed {r['seed']}: {r['steps']} steps, score {r['score'][0]}-{r['score'][1]}, "
+              f"{'ended' if r['terminated'] else 'truncated'}, team 0 return {team0:+.3f}")
+    steps = sum(r["steps"] for r in results)
+    print(f"{len(results)} matches, {steps} steps in {wall_s:.1f} s ({steps / wall_s:.0f} steps/s with Ray's start)")
+    if args.json:
+        with open(args.json, "w") as out:
+            json.dump(results, out, indent=2)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,30 +1,34 @@
-"""Rollouts in Ray tasks: each episode one task, the same summaries as playing them here."""
-import os
+"""Rollouts in Ray tasks (learning/rollouts): each match one task, the same summaries as playing
+them here; bad arguments are one line."""
+import json
+import pathlib
+import subprocess
 
 import pytest
 
 from test_multi_agent import SHORT
-from touchline_rl.rollouts import chase_ball_policy, episode, random_policy, rollouts
+from touchline_rl.rollouts import chase_ball_policy, episode
 
-ray = pytest.importorskip("ray")
-KWARGS = {"team_size": 1, "overrides": SHORT}
-
-
-@pytest.fixture(scope="module")
-def local_ray():
-    # Workers import touchline_rl and touchline_sim from the driver's environment (PYTHONPATH).
-    ray.init(num_cpus=2, include_dashboard=False, log_to_driver=False,
-             runtime_env={"env_vars": {"PYTHONPATH": os.environ.get("PYTHONPATH", "")}})
-    yield
-    ray.shutdown()
+pytest.importorskip("ray")
+ROLLOUTS = pathlib.Path(__file__).resolve().parents[2] / "learning" / "rollouts"
+KWARGS = {"team_size": 1, "overrides": SHORT, "max_cycles": None}
 
 
-def test_ray_tasks_play_the_episodes_as_this_process_would(local_ray):
-    results = rollouts(2, seed=20, policy=random_policy, env_kwargs=KWARGS)
+def test_ray_tasks_play_the_matches_as_this_process_would(tmp_path):
+    out = tmp_path / "rollouts.json"
+    command = [str(ROLLOUTS), "--episodes", "2", "--seed", "20", "--team-size", "1", "--workers", "2",
+               "--json", str(out)] + [f"--set={s}" for s in SHORT]
+    result = subprocess.run(command, capture_output=True, text=True, timeout=300)
+    assert result.returncode == 0, result.stderr
+    results = json.loads(out.read_text())
     assert [r["seed"] for r in results] == [20, 21]
-    assert results == [episode(20, random_policy, KWARGS), episode(21, random_policy, KWARGS)]
+    for r in results:
+        here = episode(r["seed"], chase_ball_policy, KWARGS)
+        assert (r["steps"], r["returns"], tuple(r["score"]), r["terminated"], r["state_hash"]) == (
+            here["steps"], here["returns"], here["score"], here["terminated"], here["state_hash"])
     assert all(r["terminated"] and r["steps"] > 400 for r in results)
     assert results[0]["state_hash"] != results[1]["state_hash"]
+    assert "2 matches" in result.stdout
 
 
 def test_an_episode_sums_each_agents_rewards():
@@ -32,3 +36,10 @@ def test_an_episode_sums_each_agents_rewards():
     assert set(result["returns"]) == {"team0_p1", "team1_p1"}
     # GoalReward is zero-sum between the teams.
     assert result["returns"]["team0_p1"] == pytest.approx(-result["returns"]["team1_p1"])
+
+
+@pytest.mark.parametrize("args, message", [(["--episodes", "0"], "at least 1"),
+                                           (["--set", "rules.half_s=-1"], "rules.half_s")])
+def test_bad_arguments_are_one_line_and_exit_2(args, message):
+    result = subprocess.run([str(ROLLOUTS), *args], capture_output=True, text=True, timeout=60)
+    assert result.returncode == 2 and message in result.stderr
