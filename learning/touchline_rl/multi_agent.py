@@ -26,8 +26,6 @@ every agent terminated when the referee ends the match (FINISHED after the secon
 truncated when match.duration_s or max_cycles steps run out. reset() runs the match's first
 frame with every robot standing, so the first observations are real. Deterministic by seed.
 """
-import functools
-
 import gymnasium
 import numpy as np
 from pettingzoo import ParallelEnv
@@ -79,6 +77,10 @@ class MatchEnv(ParallelEnv):
         self._scale = np.array([1.0, limits["max_left_mm_s"], limits["max_turn_rad_s"], 1.0,
                                 limits["max_head_yaw_rad"]], dtype=np.float32)
         self._low, self._high = _bounds(self.observation_names)
+        self._observation_spaces = {a: gymnasium.spaces.Box(self._low, self._high, dtype=np.float32)
+                                    for a in self.possible_agents}
+        self._action_spaces = {a: gymnasium.spaces.Box(-1.0, 1.0, shape=(5,), dtype=np.float32)
+                               for a in self.possible_agents}
         self.reward = reward if reward is not None else GoalReward()
         self.max_cycles = max_cycles
         self.render_mode = render_mode
@@ -87,13 +89,13 @@ class MatchEnv(ParallelEnv):
         self._steps = 0
         self._state = None
 
-    @functools.lru_cache(maxsize=None)
+    # The same space object every call, one per agent (PettingZoo seeds them one by one); kept
+    # on the env, not in a class-wide lru_cache that would keep every env ever made alive.
     def observation_space(self, agent):
-        return gymnasium.spaces.Box(self._low, self._high, dtype=np.float32)
+        return self._observation_spaces[agent]
 
-    @functools.lru_cache(maxsize=None)
     def action_space(self, agent):
-        return gymnasium.spaces.Box(-1.0, 1.0, shape=(5,), dtype=np.float32)
+        return self._action_spaces[agent]
 
     def reset(self, seed=None, options=None):
         """A new match seeded with `seed` (None: drawn from the previous seed's stream)."""
