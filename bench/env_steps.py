@@ -1,4 +1,5 @@
-"""Steps per second of the learning environments on one core (see bench/env_steps)."""
+"""Steps per second of the learning environments on one core (see bench/env_steps): the
+single-robot env and, next to it, the multi-agent match env (one step moves every robot)."""
 import argparse
 import json
 import os
@@ -9,6 +10,7 @@ import gymnasium as gym
 import numpy as np
 
 import touchline_rl
+from touchline_rl.multi_agent import MatchEnv
 from touchline_rl.native import touchline_sim
 
 
@@ -45,6 +47,36 @@ def env_runner(env_id, wrapped):
     return run
 
 
+def raw_match(team_size):
+    def run(steps):
+        sim = touchline_sim.MultiRobotSim(overrides=[f"match.team_size={team_size}"])
+        actions = np.tile(np.array([300.0, 0.0, 0.5, 0.0, 0.0], dtype=np.float32), (2 * team_size, 1))
+
+        def step():
+            sim.step(actions)
+            return sim.game_over or sim.out_of_time
+
+        return steps_per_s(step, lambda: sim.reset(1), steps)
+    return run
+
+
+def match_env(team_size):
+    def run(steps):
+        env = MatchEnv(team_size=team_size)
+        rng = np.random.default_rng(1)
+        # Actions drawn beforehand, a dict per step as a learner hands them over.
+        drawn = rng.uniform(-1, 1, size=(steps, len(env.possible_agents), 5)).astype(np.float32)
+        it = iter(drawn)
+
+        def step():
+            actions = dict(zip(env.possible_agents, next(it)))
+            env.step(actions)
+            return not env.agents
+
+        return steps_per_s(step, lambda: env.reset(seed=1), steps)
+    return run
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--steps", type=int, default=100_000, help="steps per measurement")
@@ -60,6 +92,10 @@ def main():
         "GoToPose-v0 (gymnasium.make)": env_runner("Touchline/GoToPose-v0", True),
         "GoToPoseContinuous-v0 (bare env)": env_runner("Touchline/GoToPoseContinuous-v0", False),
         "GoToPoseContinuous-v0 (gymnasium.make)": env_runner("Touchline/GoToPoseContinuous-v0", True),
+        "touchline_sim.MultiRobotSim.step (2 v 2)": raw_match(2),
+        "MatchEnv ParallelEnv (1 v 1)": match_env(1),
+        "MatchEnv ParallelEnv (2 v 2)": match_env(2),
+        "MatchEnv ParallelEnv (5 v 5)": match_env(5),
     }
     figures = {}
     for name, run in cases.items():

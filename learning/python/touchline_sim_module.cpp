@@ -51,6 +51,8 @@ void define_tile_learning(py::module_& m);
 
 } // namespace
 
+void define_multi_robot(py::module_& m); // multi_robot_module.cpp
+
 PYBIND11_MODULE(touchline_sim, m) {
   m.doc() = "One robot on a Touchline field, in process: the real walk, world and C++ behaviours.";
   py::register_exception<ConfigError>(m, "ConfigError", PyExc_ValueError);
@@ -117,6 +119,7 @@ PYBIND11_MODULE(touchline_sim, m) {
         return std::map<std::string, float>{{"length_mm", f.length_mm}, {"width_mm", f.width_mm}};
       });
   define_tile_learning(m);
+  define_multi_robot(m);
 }
 
 namespace {

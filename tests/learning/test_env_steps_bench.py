@@ -12,8 +12,8 @@ def test_prints_and_writes_every_figure(tmp_path):
                             capture_output=True, text=True)
     assert result.returncode == 0, result.stderr
     figures = json.loads(out.read_text())["steps_per_s"]
-    assert len(figures) == 5 and all(v > 0 for v in figures.values())
-    assert len(result.stdout.strip().splitlines()) == 5
+    assert len(figures) == 9 and all(v > 0 for v in figures.values())
+    assert len(result.stdout.strip().splitlines()) == 9
 
 
 def test_refuses_a_zero_step_count():
