@@ -238,6 +238,7 @@ def preflight(a: argparse.Namespace):
             raise BadInput(f"{b} not found; build first (tools/setup)")
     # In process, touchline_match --print-match checks the world config (and there is no bus to open).
     plan = None if a.in_process else check_world(bin_world, world_options(a))
+    checks_robots = not a.in_process  # robot_shim --check opens the bus; touchline_match checks its robots itself
     for team in (0, 1):
         spec = getattr(a, f"team{team}")
         what = f"--team{team} {spec}" if spec else f"--skill {a.skill}" if a.behaviour == "py" else "--behaviour goto"
@@ -245,7 +246,8 @@ def preflight(a: argparse.Namespace):
         if behaviour[:2] == ["--behaviour", "py"]:  # the skill is made when the robot first ticks: check it now
             skill = behaviour[behaviour.index("--param") + 1].partition("=")[2]
             check_python_skill(what, skill, a.python_dir or ROOT / "behaviour_py")
-        check_robot(bin_shim, what, shim_command(a, bin_shim, team, 1, behaviour)[1:])
+        if checks_robots:
+            check_robot(bin_shim, what, shim_command(a, bin_shim, team, 1, behaviour)[1:])
     return plan
 
 
@@ -361,6 +363,8 @@ class Launcher:
             logger.error(f"launch: stopping the match: sim_world {world.why()} (logs in {self.logdir})")
             return EXIT_FAILED
         keeper.after_match(SHIMS_EXIT_S, lambda: self.stop.signum is not None)  # they end on FINISHED
+        if watch.kicked_off and not announced:  # a match shorter than one look of the loop above
+            watch.say(f"launch: kick-off, all {2 * match.team_size} robots joined")
         watch.stop()  # the bar ends before the summary starts
         if (rc := self.interrupted()) is not None:
             return rc

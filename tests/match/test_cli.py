@@ -141,9 +141,9 @@ def test_check_modes_judge_a_match_without_playing_it():
     result = run(SIM_WORLD, "--check", "--config", ROOT / "config" / "spl2020.ini", "--set", "rules.half_s=300",
                  "--set", "rules.standby_s=10")
     assert result.returncode == 0, result.stderr
-    assert json.loads(result.stdout) == {"planned_s": 722, "goal_stoppage_s": 50, "duration_s": 1800, "team_size": 5}
+    assert json.loads(result.stdout) == {"planned_s": 722, "goal_stoppage_s": 50, "duration_s": 3600, "team_size": 5}
     assert json.loads(run(SIM_WORLD, "--check", "--duration", 60).stdout)["planned_s"] == 60
-    assert json.loads(run(SIM_WORLD, "--check", "--set", "rules.referee=false").stdout)["planned_s"] == 1800
+    assert json.loads(run(SIM_WORLD, "--check", "--set", "rules.referee=false").stdout)["planned_s"] == 3600
     expect_usage_error(run(SIM_WORLD, "--check", "--set", "rules.nosuch=1"),
                        "unrecognised option 'rules.nosuch' (the keys of [rules]: referee,")
     # robot_shim --check: options, config files and a C++ behaviour with its parameters.

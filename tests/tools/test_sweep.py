@@ -57,7 +57,8 @@ def test_a_failed_match_is_a_row_with_its_error(tmp_path):
     assert rc == 1, output
     played, failed = table(tmp_path)
     assert played["status"] == "ok" and played["goals0"] != ""
-    assert failed["status"] == "failed" and failed["exit_code"] == "1" and failed["goals0"] == ""
+    # The launcher refuses the missing config before anything starts: bad input, exit 2.
+    assert failed["status"] == "failed" and failed["exit_code"] == "2" and failed["goals0"] == ""
     assert "sim_world" in failed["error"], failed["error"]
     assert "1 of 2 matches failed" in output
 
