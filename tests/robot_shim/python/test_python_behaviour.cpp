@@ -444,17 +444,18 @@ TEST_F(PythonRobot, TimeTheProcessSpentStoppedDoesNotCount) {
   EXPECT_EQ(log_.str(), "");
 }
 
+/// A Python behaviour from `dir` with robot.params {"id": id}: one of several robots in one process.
+std::unique_ptr<PythonBehaviour> robot_with_id(const fs::path& dir, const std::string& id) {
+  PythonBehaviourDef d;
+  d.directory = dir;
+  d.params = {{"id", id}};
+  return std::make_unique<PythonBehaviour>(d);
+}
+
 TEST(PythonBehaviours, TwoInOneProcessKeepTheirOwnModulesAndParams) {
-  std::string pattern = (fs::temp_directory_path() / "touchline-py-XXXXXX").string();
-  ASSERT_NE(mkdtemp(pattern.data()), nullptr);
-  const fs::path dir = pattern;
+  const fs::path dir = testing_support::make_temp_dir("touchline-py");
   fs::copy_file(kFixtures / "counter.py", dir / "behaviour.py");
-  auto make = [&](const std::string& id) {
-    PythonBehaviourDef d;
-    d.directory = dir;
-    d.params = {{"id", id}};
-    return std::make_unique<PythonBehaviour>(d);
-  };
+  auto make = [&](const std::string& id) { return robot_with_id(dir, id); };
   {
     auto a = make("1");
     auto b = make("2");
@@ -475,17 +476,10 @@ TEST(PythonBehaviours, TwoInOneProcessKeepTheirOwnModulesAndParams) {
 TEST(PythonBehaviours, AModuleLoadedMidMatchStaysItsRobots) {
   // A helper first imported by a later tick, while the other robot's modules are stashed,
   // is this robot's: swapping the robots looks at what each loaded, not at every module.
-  std::string pattern = (fs::temp_directory_path() / "touchline-py-XXXXXX").string();
-  ASSERT_NE(mkdtemp(pattern.data()), nullptr);
-  const fs::path dir = pattern;
+  const fs::path dir = testing_support::make_temp_dir("touchline-py");
   fs::copy_file(kFixtures / "lazy_counter.py", dir / "behaviour.py");
   fs::copy_file(kFixtures / "count_helper.py", dir / "count_helper.py");
-  auto make = [&](const std::string& id) {
-    PythonBehaviourDef d;
-    d.directory = dir;
-    d.params = {{"id", id}};
-    return std::make_unique<PythonBehaviour>(d);
-  };
+  auto make = [&](const std::string& id) { return robot_with_id(dir, id); };
   {
     auto a = make("1");
     auto b = make("2");
