@@ -297,26 +297,25 @@ class Launcher:
                 logger.error(f"launch: {b} not found; build first (tools/setup)")
                 return 2
         sys.path.insert(0, str(a.build_dir / "lcm_types" / "gen" / "python"))
-        if a.in_process:
-            try:
-                rc = self.play_in_process(bin_match)
-            finally:
-                self.children.stop_all()
-            if rc == 0:
-                shutil.rmtree(self.logdir, ignore_errors=True)
-            return rc
         log = None
         if not a.no_log:
             stamp = datetime.datetime.now().strftime("%Y-%m-%d_%H%M%S")
             log = a.log_dir / f"{stamp}_seed{a.seed}.lcmlog"
             log.parent.mkdir(parents=True, exist_ok=True)
-        watch = MatchWatch(a.lcm_url, progress=progress_kind(a), team_size=a.team_size, plan=getattr(a, "plan", None))
-        keeper = ShimKeeper(self.children, watch, restart=a.restart_dead)
-        try:
-            rc = self.play(bin_world, bin_shim, watch, keeper, log)
-        finally:
-            watch.stop()
-            self.children.stop_all()
+        if a.in_process:
+            try:
+                rc = self.play_in_process(bin_match, log)
+            finally:
+                self.children.stop_all()
+        else:
+            watch = MatchWatch(a.lcm_url, progress=progress_kind(a), team_size=a.team_size,
+                               plan=getattr(a, "plan", None))
+            keeper = ShimKeeper(self.children, watch, restart=a.restart_dead)
+            try:
+                rc = self.play(bin_world, bin_shim, watch, keeper, log)
+            finally:
+                watch.stop()
+                self.children.stop_all()
         if log and log.exists():
             logger.info(f"launch: match log {log} ({log.stat().st_size / 1e6:.1f} MB)")
         if rc == 0:  # the processes' own logs are kept only to explain a failure
@@ -397,7 +396,7 @@ class Launcher:
         logger.info(f"launch: {2 * match.team_size} robots ({what}), {length}, {mode(a)} mode, seed {a.seed}, "
                     f"field {match.field_length_mm:.0f} x {match.field_width_mm:.0f} mm")
 
-    def play_in_process(self, bin_match: Path) -> int:
+    def play_in_process(self, bin_match: Path, log: Path | None) -> int:
         """The match in one process (touchline_match): the robots' options as the shims would get
         them; its summary carries the match's events, which lockstep takes from the bus."""
         a = self.args
@@ -410,7 +409,7 @@ class Launcher:
         match = types.SimpleNamespace(**json.loads(described.stdout))
         targets = kickoff_targets(match)
         summary_path = self.logdir / "summary.json"
-        argv = [*world, "--summary", summary_path, "--quiet"]
+        argv = [*world, "--summary", summary_path, "--quiet", *(["--log", log] if log else [])]
         for team, player, x, y, theta in targets:
             argv += ["--", *shim_command(a, bin_match, team, player, robot_behaviour(a, team, (x, y, theta)))[1:]]
         self.announce(match)

@@ -14,18 +14,21 @@
 #include <boost/program_options.hpp>
 #include <pybind11/embed.h>
 
-#include "touchline/version.hpp"
 #include "touchline/apps/robot_options.hpp"
 #include "touchline/apps/summary_json.hpp"
 #include "touchline/behaviour/registry.hpp"
 #include "touchline/cli.hpp"
 #include "touchline/ini.hpp"
 #include "touchline/inprocess/inprocess_match.hpp"
+#include "touchline/lcm/codec.hpp"
+#include "touchline/lcm/match_config.hpp"
+#include "touchline/lcm/match_recorder.hpp"
 #include "touchline/lcm/world_messages.hpp"
 #include "touchline/python/python_behaviour.hpp"
 #include "touchline/python/tick_guard.hpp"
 #include "touchline/robot_api/data.hpp"
 #include "touchline/sim/config.hpp"
+#include "touchline/version.hpp"
 
 namespace po = boost::program_options;
 using namespace touchline;
@@ -89,7 +92,7 @@ void print_progress(const sim::Match& match, double wall_s) {
 } // namespace
 
 int main(int argc, char** argv) {
-  std::string config_path, summary_path;
+  std::string config_path, summary_path, log_path;
   std::vector<std::string> overrides;
   uint64_t seed = 1;
   double duration_s = -1;
@@ -107,6 +110,10 @@ int main(int argc, char** argv) {
      "write a JSON summary of the match to this path at its end, as sim_world --summary does, with the "
      "match's events (goals, penalties, falls, set plays) as \"match_events\", the world's own wall time "
      "(world_wall_s, physics_rtf) and the match's CPU time (cpu_s, cpu_rtf) (checked writable at start)")
+    ("log", po::value(&log_path),
+     "record the match to this LCM event log as sim_world --log does, what the world says: TL_MATCH, "
+     "TL_GAME, TL_TRUTH every frame, TL_EVENT (there is no bus, so no robot messages; timestamps are "
+     "simulated time; checked writable at start)")
     ("print-match", "print the match's set-up (team size, field size, duration: the config after every "
      "--set) as one JSON line and exit, without robots")
     ("quiet", "no progress lines");
@@ -135,6 +142,7 @@ int main(int argc, char** argv) {
     }
     if (args.size() < 2) throw po::error("no robots: give each one's options after a --");
     if (!summary_path.empty()) require_writable("--summary", summary_path);
+    if (!log_path.empty()) require_writable("--log", log_path);
     for (size_t i = 1; i < args.size(); ++i) {
       try {
         robots.push_back(parse_robot(args[i]));
@@ -191,7 +199,16 @@ int main(int argc, char** argv) {
     sim::Match& match = play->match();
     std::vector<sim::MatchEvent> events;
     transport::TruthHash truth_hash;
+    std::optional<transport::MatchRecorder> recorder;
+    if (!log_path.empty()) recorder.emplace(log_path);
+    const auto record = [&](const char* channel, const std::vector<uint8_t>& bytes) {
+      if (!recorder) return;
+      recorder->record(channel, bytes.data(), static_cast<int>(bytes.size()), match.utime());
+      if (!recorder->error().empty()) throw std::runtime_error(recorder->error()); // no log with a hole
+    };
     play->start();
+    record(transport::kMatchChannel, transport::encoded(transport::to_lcm(config, seed, match.utime())));
+    record(transport::kGameChannel, transport::encoded(transport::to_msg(match.game(), match.utime())));
     const auto start = std::chrono::steady_clock::now();
     const double start_cpu_s = process_cpu_s();
     const auto wall_s = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
@@ -199,11 +216,22 @@ int main(int argc, char** argv) {
     // the truth after the step goes into the hash.
     while (!match.finished() && !g_stop_signal) {
       play->step_frame();
-      truth_hash.add(match.truth());
-      for (sim::MatchEvent& event : match.take_events()) events.push_back(std::move(event));
+      const std::vector<uint8_t> truth = transport::encoded(transport::to_msg(match.truth()));
+      truth_hash.add(truth.data(), truth.size());
+      record(transport::kTruthChannel, truth);
+      std::vector<sim::MatchEvent> new_events = match.take_events();
+      for (const sim::MatchEvent& event : new_events) record(transport::kEventChannel, transport::encoded(transport::to_msg(event)));
+      // The game as the world node says it: at once when it changed, else once a second.
+      if (!new_events.empty() || match.frame() % kFramesPerSecond == 0)
+        record(transport::kGameChannel, transport::encoded(transport::to_msg(match.game(), match.utime())));
+      for (sim::MatchEvent& event : new_events) events.push_back(std::move(event));
       if (!quiet && match.frame() % (10 * kFramesPerSecond) == 0) print_progress(match, wall_s());
     }
-    for (sim::MatchEvent& event : match.take_events()) events.push_back(std::move(event));
+    for (sim::MatchEvent& event : match.take_events()) {
+      record(transport::kEventChannel, transport::encoded(transport::to_msg(event)));
+      events.push_back(std::move(event));
+    }
+    record(transport::kGameChannel, transport::encoded(transport::to_msg(match.game(), match.utime(), true)));
     transport::RunSummary summary;
     summary.frames = match.frame();
     summary.sim_s = static_cast<double>(match.utime()) * 1e-6;

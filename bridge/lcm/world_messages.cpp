@@ -31,6 +31,20 @@ world_truth_t to_msg(const sim::TruthFrame& truth) {
   return m;
 }
 
+game_state_t to_msg(const GameInfo& game, int64_t utime, bool finished) {
+  game_state_t msg;
+  msg.utime = utime;
+  msg.state = static_cast<int8_t>(finished ? GameState::kFinished : game.state);
+  msg.secs_remaining = game.secs_remaining;
+  msg.first_half = game.first_half ? 1 : 0;
+  msg.kickoff_team = static_cast<int8_t>(game.kickoff_team);
+  msg.score[0] = static_cast<int8_t>(game.score[0]);
+  msg.score[1] = static_cast<int8_t>(game.score[1]);
+  msg.set_play = static_cast<int8_t>(game.set_play);
+  msg.set_play_team = static_cast<int8_t>(game.set_play_team);
+  return msg;
+}
+
 match_event_t to_msg(const sim::MatchEvent& event) {
   match_event_t msg;
   msg.utime = event.utime;

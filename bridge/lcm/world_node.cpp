@@ -303,18 +303,7 @@ class WorldNode {
   /// The game as the referee sees it; `finished` marks the end of the run for the shims
   /// (also when it ends on the duration cap or a stop before the referee's FINISHED).
   void publish_game_state(bool finished) {
-    const GameInfo game = match_.game();
-    game_state_t msg;
-    msg.utime = match_.utime();
-    msg.state = static_cast<int8_t>(finished ? GameState::kFinished : game.state);
-    msg.secs_remaining = game.secs_remaining;
-    msg.first_half = game.first_half ? 1 : 0;
-    msg.kickoff_team = static_cast<int8_t>(game.kickoff_team);
-    msg.score[0] = static_cast<int8_t>(game.score[0]);
-    msg.score[1] = static_cast<int8_t>(game.score[1]);
-    msg.set_play = static_cast<int8_t>(game.set_play);
-    msg.set_play_team = static_cast<int8_t>(game.set_play_team);
-    publish(kGameChannel, msg);
+    publish(kGameChannel, to_msg(match_.game(), match_.utime(), finished));
   }
 
   /// TL_MATCH: the geometry and set-up this match runs with (the config after every override).

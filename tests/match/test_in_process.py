@@ -115,3 +115,37 @@ def test_help_documents_the_world_and_the_robots():
     for option in ["--config", "--set", "--duration", "--seed", "--summary", "--print-match", "--quiet"]:
         assert option in result.stdout
     assert "-- [robot options]" in result.stdout and "goto" in result.stdout and "py:MODULE" in result.stdout
+
+
+def test_the_in_process_log_holds_what_the_world_says(tmp_path):
+    """touchline_match --log: the world's own messages (no bus, so no robot's), readable as a
+    lockstep match's log: the set-up first, a truth per frame, the game, the events."""
+    sys.path.insert(0, str(BUILD / "lcm_types" / "gen" / "python"))
+    sys.path.insert(0, str(ROOT / "tools"))
+    import lcm
+    import match_stats
+    from touchline import game_state_t, match_event_t, world_truth_t
+
+    log = tmp_path / "match.lcmlog"
+    summary = tmp_path / "summary.json"
+    result = subprocess.run([str(a) for a in [TOUCHLINE_MATCH, "--config", ROOT / "config" / "spl2020.ini", "--duration", 90,
+                             "--seed", 7, "--quiet", "--summary", summary, "--log", log,
+                             "--", "--team", "0", "--player", "2", "--behaviour", "Team",  # field players, not goalies
+                             "--field-config", ROOT / "config" / "spl2020.ini",
+                             "--", "--team", "1", "--player", "2", "--behaviour", "Team",
+                             "--field-config", ROOT / "config" / "spl2020.ini"]],
+                            capture_output=True, text=True, timeout=MATCH_S)
+    assert result.returncode == 0, result.stderr
+    events = list(lcm.EventLog(str(log), "r"))
+    assert events[0].channel == "TL_MATCH"
+    truths = [world_truth_t.decode(e.data) for e in events if e.channel == "TL_TRUTH"]
+    played = json.loads(summary.read_text())
+    assert [t.frame for t in truths] == list(range(played["frames"]))  # the frame each truth ends
+    assert all(e.timestamp == t.utime for e, t in zip([e for e in events if e.channel == "TL_TRUTH"], truths))
+    states = [game_state_t.decode(e.data).state for e in events if e.channel == "TL_GAME"]
+    assert game_state_t.PLAYING in states and states[-1] == game_state_t.FINISHED
+    kinds = [match_event_t.decode(e.data).kind for e in events if e.channel == "TL_EVENT"]
+    assert len(kinds) == len(played["match_events"]) and match_event_t.STATE_CHANGE in kinds
+    # The statistics a sweep takes from a lockstep log come from this one too.
+    stats = match_stats.analyse_log(log)
+    assert sum(stats["possession_frames"]) > 0
