@@ -88,5 +88,13 @@ TEST(BehaviourPlugin, ALibraryOfAnotherAbiIsRefused) {
             std::string::npos);
 }
 
+TEST(BehaviourPlugin, ALibraryBuiltAgainstOtherHeadersIsRefused) {
+  const auto blackboard_bytes = std::to_string(sizeof(api::Blackboard));
+  EXPECT_NE(error_of(TOUCHLINE_WRONG_LAYOUT_PLUGIN, request("Walk"))
+                .find(": built against other robot API headers (Blackboard " +
+                      std::to_string(sizeof(api::Blackboard) + 8) + " bytes there, " + blackboard_bytes + " here)"),
+            std::string::npos);
+}
+
 } // namespace
 } // namespace touchline::apps
