@@ -89,7 +89,8 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
                        help=f"team {team}'s behaviour, e.g. py:Team, cpp:Team, py:Striker, with the skill's "
                             "parameters after commas, e.g. cpp:Team,walker=learned; runswift:SKILL (e.g. "
                             "runswift:WalkToPoint,headskill=HeadFindBall) runs a rUNSWift behaviour folder "
-                            "(--runswift-dir) (default: --behaviour/--skill)")
+                            "(--runswift-dir); plugin:PATH:NAME the behaviour NAME of a team's own C++ library PATH "
+                            "(robot_shim --behaviour-plugin) (default: --behaviour/--skill)")
     p.add_argument("--walk-engine", choices=WALK_ENGINES, default=WALK_ENGINES[0],
                    help="every robot's walk engine: walkcycle (our WalkCycle, the default), nao-joints (the same "
                         "plan as a Nao's joint angles, through our kinematics) or runswift (rUNSWift's own walk, in a "
@@ -115,7 +116,8 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
                         "inactive (default: the match goes on without it); not in free mode")
     p.add_argument("--set", action="append", default=[], metavar="SECTION.KEY=VALUE",
                    help="override a world config value (repeatable), e.g. rules.half_s=300")
-    p.add_argument("--build-dir", type=Path, default=DEFAULT_BUILD)
+    p.add_argument("--build-dir", type=Path, default=DEFAULT_BUILD,
+                   help="the build folder whose bin/ has the programs, or an install prefix (cmake --install)")
     p.add_argument("--lcm-url", default="udpm://239.255.76.67:7667?ttl=0")
     p.add_argument("--runswift-dir", type=Path,
                    help="the rUNSWift behaviours folder runswift:SKILL teams run (e.g. a clone's "
@@ -141,7 +143,8 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     for team in (0, 1):
         spec = getattr(args, f"team{team}")
         if spec is not None and team_behaviour(spec, args.runswift_dir or Path(".")) is None:
-            p.error(f"--team{team} must be py:SKILL, cpp:SKILL or runswift:SKILL, then any ,KEY=VALUE (got '{spec}')")
+            p.error(f"--team{team} must be py:SKILL, cpp:SKILL, runswift:SKILL or plugin:PATH:NAME, then any "
+                    f",KEY=VALUE (got '{spec}')")
         if spec is not None and spec.startswith("runswift:") and args.runswift_dir is None:
             p.error(f"--team{team} {spec} needs --runswift-dir (a rUNSWift behaviours folder)")
     if args.duration is not None and args.duration <= 0:
@@ -165,14 +168,20 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
 
 def team_behaviour(spec: str, runswift_dir: Path | None = None) -> list | None:
     """robot_shim's behaviour options for a --team spec (LANG:SKILL[,KEY=VALUE...]), or
-    None if it is malformed. runswift:SKILL runs the folder `runswift_dir`."""
+    None if it is malformed. runswift:SKILL runs the folder `runswift_dir`; plugin:PATH:NAME
+    the behaviour NAME of the library PATH (made absolute: the shims may run elsewhere)."""
     head, *assignments = spec.split(",")
     language, _, skill = head.partition(":")
-    if language not in ("py", "cpp", "runswift") or not skill or ":" in skill:
+    if language not in ("py", "cpp", "runswift", "plugin") or not skill or (":" in skill) != (language == "plugin"):
         return None
     if any("=" not in a or a.startswith("=") for a in assignments):
         return None
     params = [arg for a in assignments for arg in ("--param", a)]
+    if language == "plugin":  # plugin:PATH:NAME: a team's own C++ library (README, "Your own C++ behaviour")
+        path, _, name = skill.rpartition(":")
+        if not path or not name:
+            return None
+        return ["--behaviour-plugin", str(Path(path).resolve()), "--behaviour", name, *params]
     if language == "py":
         return ["--behaviour", "py", "--param", f"skill={skill}", *params]
     if language == "runswift":
@@ -296,7 +305,9 @@ class Launcher:
             if not b.exists():
                 logger.error(f"launch: {b} not found; build first (tools/setup)")
                 return 2
-        sys.path.insert(0, str(a.build_dir / "lcm_types" / "gen" / "python"))
+        # The message types' Python: a build folder's, or an install prefix's (cmake --install).
+        sys.path[:0] = [str(a.build_dir / "lcm_types" / "gen" / "python"),
+                        str(a.build_dir / "share" / "touchline" / "lcm_types" / "python")]
         log = None
         if not a.no_log:
             stamp = datetime.datetime.now().strftime("%Y-%m-%d_%H%M%S")

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "touchline/apps/behaviour_factory.hpp"
+#include "touchline/apps/behaviour_plugin.hpp"
 #include "touchline/behaviour/registry.hpp"
 #include "touchline/cli.hpp"
 #include "touchline/ini.hpp"
@@ -52,6 +53,9 @@ void add_robot_options(po::options_description& options, RobotOptions& o) {
     ("behaviour", po::value(&def.behaviour.name)->default_value(def.behaviour.name),
      "the behaviour to run: a C++ one, or py / py:MODULE for Python (see the list below)")
     ("param", po::value(&o.params)->composing(), "a behaviour parameter, key=value (repeatable)")
+    ("behaviour-plugin", po::value(&o.behaviour_plugin)->value_name("PATH"),
+     "a team's own C++ behaviour library (a shared library built against the installed robot API, "
+     "robot_api/plugin.hpp): --behaviour NAME and --param values go to its factory")
     ("python-dir", po::value(&def.behaviour.python_dir)->default_value(def.behaviour.python_dir),
      "the Python behaviour's folder: first on sys.path, its .py files reloaded when edited")
     ("data-dir", po::value(&o.data_dir)->default_value(o.data_dir),
@@ -104,7 +108,10 @@ std::string behaviour_list() {
          "      and BehaviourRequest (docs/runswift_behaviour.md). --param skill=NAME (default Game),\n"
          "      headskill=NAME (HeadCentre), positioning=NAME, broadcast_ms=N (1000: one team message\n"
          "      a second), players_per_team=N (5). FIELD_LENGTH etc. come from --field-config.\n"
-         "      Reload, timeout and errors as for py; no behaviour.py: the robot stands until it appears.\n";
+         "      Reload, timeout and errors as for py; no behaviour.py: the robot stands until it appears.\n"
+         "  --behaviour-plugin PATH --behaviour NAME: NAME made by a team's own library (README, \"Your\n"
+         "      own C++ behaviour\"); a missing file, a library without the entry point or built\n"
+         "      against another robot API, or a name it refuses: one line, exit status 2.\n";
   return out.str();
 }
 
@@ -115,6 +122,10 @@ void finish_robot_options(RobotOptions& o) {
   } catch (const ConfigError& e) {
     throw po::error(std::string("--behaviour ") + e.what());
   }
+  // A library's names are its own, but the programs start Python for these: keep them Python's.
+  if (!o.behaviour_plugin.empty() && robot::python_module(o.def.behaviour))
+    throw po::error("--behaviour-plugin makes C++ behaviours: --behaviour " + o.def.behaviour.name +
+                    " names the Python one");
   o.def = robot::load_robot_def(o.files, std::move(o.def));
   try {
     robot::make_walk_engine(o.def.engine, o.def.walk, o.def.kick); // an unknown name: a usage error, now
@@ -125,6 +136,15 @@ void finish_robot_options(RobotOptions& o) {
 }
 
 std::unique_ptr<api::Behaviour> make_robot_behaviour(const RobotOptions& o, const std::string& log_name) {
+  if (!o.behaviour_plugin.empty()) {
+    api::PluginRequest request;
+    request.name = o.def.behaviour.name;
+    request.params = o.def.behaviour.params;
+    request.team = o.def.id.team;
+    request.player = o.def.id.player;
+    request.data_dir = o.data_dir;
+    return make_plugin_behaviour(o.behaviour_plugin, request);
+  }
   python::PythonBehaviourDef python;
   if (robot::python_module(o.def.behaviour)) {
     python.name = log_name;

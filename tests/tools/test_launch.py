@@ -100,8 +100,8 @@ def test_the_launcher_offers_every_robot_shim_option_a_match_needs():
     shim_help = subprocess.run([str(BUILD / "bin" / "robot_shim"), "--help"], capture_output=True, text=True,
                                timeout=30).stdout
     shim_options = set(re.findall(r"^\s+(--[a-z-]+)", shim_help, re.M))
-    set_by_launcher = {"--team", "--player", "--behaviour", "--param", "--walk-config", "--walk-engine",
-                       "--field-config", "--lcm-url", "--data-dir"}
+    set_by_launcher = {"--team", "--player", "--behaviour", "--behaviour-plugin", "--param", "--walk-config",
+                       "--walk-engine", "--field-config", "--lcm-url", "--data-dir"}
     by_hand_only = {"--help", "--version", "--check", "--secret-file", "--join-timeout", "--world-timeout"}
     offered = {option for option, _ in SHIM_OPTIONS}
     assert shim_options - set_by_launcher - by_hand_only == offered, "robot_shim and tools/match drifted apart"
@@ -189,11 +189,16 @@ def test_team_specs_carry_skill_parameters():
     assert team_behaviour("runswift:WalkToPoint,headskill=HeadFindBall", Path("/rs/behaviours")) == [
         "--behaviour", "runswift", "--python-dir", "/rs/behaviours", "--param", "skill=WalkToPoint",
         "--param", "headskill=HeadFindBall"]
-    for bad in ("Team", "java:Team", "py:", "py:Team,walker", "py:Team,=x", "py:a:b", "runswift:"):
+    assert team_behaviour("plugin:/teams/libours.so:ChaseBall,speed=0.5") == [
+        "--behaviour-plugin", "/teams/libours.so", "--behaviour", "ChaseBall", "--param", "speed=0.5"]
+    assert team_behaviour("plugin:libours.so:ChaseBall")[1] == str(Path("libours.so").resolve())
+    for bad in ("Team", "java:Team", "py:", "py:Team,walker", "py:Team,=x", "py:a:b", "runswift:", "plugin:x.so",
+                "plugin::Chase", "plugin:x.so:"):
         assert team_behaviour(bad) is None, bad
     result = launch("--team0", "py:Team,walker")
     assert result.returncode == 2
-    assert ("--team0 must be py:SKILL, cpp:SKILL or runswift:SKILL, then any ,KEY=VALUE (got 'py:Team,walker')"
+    assert ("--team0 must be py:SKILL, cpp:SKILL, runswift:SKILL or plugin:PATH:NAME, then any ,KEY=VALUE "
+            "(got 'py:Team,walker')"
             in result.stderr)
     result = launch("--team1", "runswift:WalkAround")
     assert result.returncode == 2

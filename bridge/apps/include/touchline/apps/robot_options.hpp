@@ -23,6 +23,7 @@ struct RobotOptions {
   robot::RobotConfigFiles files;   ///< --walk-config, --kick-config, --head-config, --field-config
   std::vector<std::string> params; ///< --param key=value, as given
   std::string data_dir;            ///< --data-dir: api::data_path looks there
+  std::string behaviour_plugin;    ///< --behaviour-plugin: a team's library makes def.behaviour (behaviour_plugin.hpp)
   std::string secret_file;         ///< --secret-file (the bus only)
   transport::RobotNodeDef node;    ///< --lcm-url, timeouts, snapshots (the bus only)
   /// Far above sim_world's 1000 ms robot timeout, so a slow but finishing tick is the world's
@@ -42,7 +43,7 @@ std::string behaviour_list();
 /// the data directory checked. Throws po::error (a bad option) or ConfigError (a bad file).
 void finish_robot_options(RobotOptions& o);
 
-/// The behaviour o.def names, made for the robot o.def.id; a Python one (a running
+/// The behaviour o.def names, made for the robot o.def.id (by o.behaviour_plugin when set); a Python one (a running
 /// interpreter needed) is logged as `log_name` and bounded by o.tick_timeout_ms. Throws as
 /// apps::make_behaviour does.
 std::unique_ptr<api::Behaviour> make_robot_behaviour(const RobotOptions& o, const std::string& log_name);
