@@ -7,11 +7,11 @@ import pytest
 import robot
 from boards import board, message
 
-from skills.search import (HOME_NEAR_DIST, SEARCH_CYCLE_FRAMES, SEARCH_TURN_FRAMES,
-                           SEARCH_TURN_LIMIT_FRAMES, SEARCH_TURN_SPEED, Search, searchSpot, teamBall, teamBallTarget)
+from skills.search import (HOME_NEAR_DIST, SEARCH_CYCLE_FRAMES, SEARCH_TURN_FRAMES, SEARCH_TURN_LIMIT_FRAMES,
+                           SEARCH_TURN_SPEED, Search, searchSpot, teamBall, teamBallTarget)
 from skills.team import Team
-from skills.team_comm import (MESSAGE_STALE_US, NO_BALL_DISTANCE, ROLE_DEFENDER, ROLE_MIDFIELDER, ROLE_STRIKER, TeamInfo,
-                              encodeMessage)
+from skills.team_comm import (MESSAGE_STALE_US, NO_BALL_DISTANCE, ROLE_DEFENDER, ROLE_MIDFIELDER, ROLE_STRIKER,
+                              TeamInfo, encodeMessage)
 
 WALK = robot.ActionType.WALK
 STAND = robot.ActionType.STAND
