@@ -5,30 +5,25 @@ own ticks, never wall time), the request carries this robot's team message. The 
 penalised or fallen: stand (it gets up by itself); INITIAL, STANDBY, SET, FINISHED: stand; READY: walk
 to the player number's kick-off position (a fixed legal formation in the own half, outside
 the centre circle: the API does not say which team kicks off); PLAYING: the role's skill,
-roles assigned from the team messages (team_comm.assignRole) unless fixed. A striker, or a
-supporter back home, that has not seen the ball for SEARCH_TURN_FRAMES turns on the spot
-towards the side it was last seen on.
+roles assigned from the team messages (team_comm.assignRole) unless fixed. A field player
+that has not seen the ball for SEARCH_TURN_FRAMES searches (search.py: the team ball, else a
+short turn on the spot and a walk to a search spot, in cycles).
 """
 import actioncommand
 import robot
 
 from .ball import ballRecentlySeen
-from .field import distance
 from .goalie import GOALIE_HOME_X, Goalie
 from .go_to_pose import GoToPose
 from .look_for_ball import LookForBall
+from .search import Search
 from .striker import Striker
-from .supporter import DEF_HOME_X, DEF_HOME_Y, MID_HOME_X, MID_HOME_Y, Defender, Midfielder
+from .supporter import Defender, Midfielder
 from .team_comm import (GOALIE_PLAYER, MESSAGE_EVERY_FRAMES, ROLE_DEFENDER, ROLE_GOALIE, ROLE_MIDFIELDER, ROLE_NONE,
                         ROLE_STRIKER, assignRole, encodeMessage, makeTeamInfo)
 
 TEAM_BALL_SEEN_CHEST = 0x00ff00  # green: the ball was seen recently
 TEAM_BALL_LOST_CHEST = 0xff0000  # red: searching
-SEARCH_TURN_FRAMES = 90          # frames (3 s) without the ball before turning to search
-SEARCH_TURN_SPEED = 0.8          # rad/s
-SEARCH_TURN_LIMIT_FRAMES = 220   # frames of turning (5.9 rad, just under a full turn): no spinning on the spot
-SEARCH_CYCLE_FRAMES = 520        # frames from one search turn to the next (10 s of the role's own play between)
-HOME_NEAR_DIST = 300.0           # mm: a supporter this close to home may turn to search
 READY_GOALIE_X = GOALIE_HOME_X   # mm: the kick-off formation (player 1 ...
 READY_GOALIE_Y = 0.0
 READY_STRIKER_X = -700.0         # mm: ... player 2, outside the 600 mm centre circle ...
@@ -62,15 +57,6 @@ def readyPosition(playerNumber):
     return READY_MIDFIELDER_X, mirror * READY_MIDFIELDER_Y
 
 
-def homePosition(role):
-    """(x, y) a role walks back to while the ball is lost."""
-    if role == ROLE_DEFENDER:
-        return DEF_HOME_X, DEF_HOME_Y
-    if role == ROLE_MIDFIELDER:
-        return MID_HOME_X, MID_HOME_Y
-    return GOALIE_HOME_X, 0.0
-
-
 def messageInfo(blackboard, role):
     """This robot's TeamInfo from its Blackboard."""
     gc = blackboard.gameController
@@ -89,6 +75,7 @@ class Team:
                        ROLE_MIDFIELDER: Midfielder()}
         self.readyPose = GoToPose()
         self.head = LookForBall()
+        self.search = Search()
         self.frame = 0
 
     def tick(self, blackboard):
@@ -119,20 +106,8 @@ class Team:
             return self.readyPose.tick(blackboard).body
         if gc.state != robot.GameState.PLAYING:
             return actioncommand.stand()
-        if self.searching(blackboard):
-            turn = SEARCH_TURN_SPEED if blackboard.localisation.ballPosRR.heading >= 0.0 else -SEARCH_TURN_SPEED
-            return actioncommand.walk(turn=turn)
+        if self.role != ROLE_GOALIE:
+            body = self.search.tick(blackboard, self.role)
+            if body is not None:
+                return body
         return self.skills[self.role].tick(blackboard).body
-
-    def searching(self, blackboard):
-        """Turn on the spot to find the ball: a striker, or a supporter at home, that has
-        not seen it for SEARCH_TURN_FRAMES; at most SEARCH_TURN_LIMIT_FRAMES of every
-        SEARCH_CYCLE_FRAMES, so the robot never spins on the spot."""
-        lost = blackboard.localisation.ballLostCount - SEARCH_TURN_FRAMES
-        if lost <= 0 or self.role == ROLE_GOALIE or (lost - 1) % SEARCH_CYCLE_FRAMES >= SEARCH_TURN_LIMIT_FRAMES:
-            return False
-        if self.role == ROLE_STRIKER:
-            return True
-        homeX, homeY = homePosition(self.role)
-        pos = blackboard.localisation.robotPos
-        return distance(pos.x, pos.y, homeX, homeY) < HOME_NEAR_DIST

@@ -9,7 +9,7 @@ import pytest
 
 import behaviour
 from skills import (ball, camera, field, go_to_pose, goalie, head_scan, learned_go_to_pose, line_up_and_kick,
-                    robot_limits, striker, supporter, team, team_comm, tile_policy)
+                    robot_limits, search, striker, supporter, team, team_comm, tile_policy)
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 CPP_SKILLS = ROOT / "behaviour_cpp" / "include" / "touchline" / "behaviour" / "skills"
@@ -43,7 +43,7 @@ def python_constants():
     chest colours of behaviour.py."""
     modules = {"ball": ball, "camera": camera, "go_to_pose": go_to_pose, "head_scan": head_scan,
                "line_up_and_kick": line_up_and_kick, "robot_limits": robot_limits, "field": field, "goalie": goalie,
-               "striker": striker, "supporter": supporter, "team": team, "team_comm": team_comm,
+               "search": search, "striker": striker, "supporter": supporter, "team": team, "team_comm": team_comm,
                "learned_go_to_pose": learned_go_to_pose, "tile_policy": tile_policy}
     assert {path.stem for path in PY_SKILLS.glob("*.py")} - set(modules) <= {"__init__", "go_to_ball", "look_for_ball",
                                                                               "stand", "track_ball"}

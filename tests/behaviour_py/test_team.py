@@ -9,8 +9,8 @@ from skills.field import clampOutOfOwnBox
 from skills.goalie import Goalie, goalieTarget
 from skills.striker import Striker
 from skills.supporter import Defender, Midfielder, defenderTarget, midfielderTarget, supporterTarget
-from skills.team import (SEARCH_CYCLE_FRAMES, SEARCH_TURN_FRAMES, SEARCH_TURN_LIMIT_FRAMES, SEARCH_TURN_SPEED, Team,
-                         readyPosition)
+from skills.search import SEARCH_CYCLE_FRAMES, SEARCH_TURN_FRAMES, SEARCH_TURN_LIMIT_FRAMES, SEARCH_TURN_SPEED
+from skills.team import Team, readyPosition
 from skills.team_comm import (MESSAGE_STALE_US, NO_BALL_DISTANCE, ROLE_DEFENDER, ROLE_GOALIE, ROLE_MIDFIELDER,
                               ROLE_STRIKER, TeamInfo, assignRole, decodeMessage, encodeMessage, makeTeamInfo)
 
@@ -224,7 +224,7 @@ def test_a_lost_ball_makes_the_striker_turn_to_search():
     assert command.body.actionType == STAND  # not yet: LineUpAndKick stands while the ball is lost
     after_turn = SEARCH_TURN_FRAMES + SEARCH_TURN_LIMIT_FRAMES + 1
     command = team.tick(board((0.0, 0.0, 0.0), ball=(0.0, -1000.0), seen=False, lost=after_turn))
-    assert command.body.actionType == STAND  # under a full turn, then no spinning on the spot
+    assert command.body.forward > 0.0 and command.body.turn == 0.0  # under a full turn, then off to a search spot
     command = team.tick(board((0.0, 0.0, 0.0), ball=(0.0, -1000.0), seen=False,
                               lost=SEARCH_TURN_FRAMES + SEARCH_CYCLE_FRAMES + 1))
     assert command.body.turn == pytest.approx(-SEARCH_TURN_SPEED)  # the next search turn

@@ -22,12 +22,6 @@ FieldPoint readyPosition(int playerNumber) {
   return {READY_MIDFIELDER_X, mirror * READY_MIDFIELDER_Y};
 }
 
-FieldPoint homePosition(int role) {
-  if (role == ROLE_DEFENDER) return {DEF_HOME_X, DEF_HOME_Y};
-  if (role == ROLE_MIDFIELDER) return {MID_HOME_X, MID_HOME_Y};
-  return {GOALIE_HOME_X, 0.f};
-}
-
 TeamInfo messageInfo(const Blackboard& blackboard, int role) {
   const GameControllerBlackboard& gc = blackboard.gameController;
   const AbsCoord ball = blackboard.localisation.ballPos;
@@ -64,9 +58,8 @@ ActionCommand::Body Team::body(const Blackboard& blackboard) {
     return readyPose_.tick(blackboard).body;
   }
   if (gc.state != GameState::PLAYING) return actioncommand::stand();
-  if (searching(blackboard)) {
-    const float turn = blackboard.localisation.ballPosRR.heading >= 0.f ? SEARCH_TURN_SPEED : -SEARCH_TURN_SPEED;
-    return actioncommand::walk(0.f, 0.f, turn);
+  if (role_ != ROLE_GOALIE) {
+    if (const auto searchBody = search_.tick(blackboard, role_)) return *searchBody;
   }
   switch (role_) {
     case ROLE_GOALIE: return goalie_.tick(blackboard).body;
@@ -74,16 +67,6 @@ ActionCommand::Body Team::body(const Blackboard& blackboard) {
     case ROLE_DEFENDER: return defender_.tick(blackboard).body;
     default: return midfielder_.tick(blackboard).body;
   }
-}
-
-bool Team::searching(const Blackboard& blackboard) const {
-  // At most SEARCH_TURN_LIMIT_FRAMES of every SEARCH_CYCLE_FRAMES: never spinning on the spot.
-  const int lost = blackboard.localisation.ballLostCount - SEARCH_TURN_FRAMES;
-  if (lost <= 0 || role_ == ROLE_GOALIE || (lost - 1) % SEARCH_CYCLE_FRAMES >= SEARCH_TURN_LIMIT_FRAMES) return false;
-  if (role_ == ROLE_STRIKER) return true;
-  const FieldPoint home = homePosition(role_);
-  const AbsCoord pos = blackboard.localisation.robotPos;
-  return distance(pos.x, pos.y, home.x, home.y) < HOME_NEAR_DIST;
 }
 
 } // namespace touchline::behaviour::skills

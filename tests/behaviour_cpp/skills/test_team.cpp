@@ -232,7 +232,8 @@ TEST(TeamBehaviour, ALostBallMakesTheStrikerTurnToSearch) {
   command = team.tick(teamBoard({0.f, 0.f, 0.f}, 0.f, -1000.f, false, SEARCH_TURN_FRAMES));
   EXPECT_EQ(command.body.actionType, AT::STAND); // not yet: LineUpAndKick stands while the ball is lost
   command = team.tick(teamBoard({0.f, 0.f, 0.f}, 0.f, -1000.f, false, SEARCH_TURN_FRAMES + SEARCH_TURN_LIMIT_FRAMES + 1));
-  EXPECT_EQ(command.body.actionType, AT::STAND); // under a full turn, then no spinning on the spot
+  EXPECT_GT(command.body.forward, 0.f); // under a full turn, then off to a search spot
+  EXPECT_EQ(command.body.turn, 0.f);
   command = team.tick(teamBoard({0.f, 0.f, 0.f}, 0.f, -1000.f, false, SEARCH_TURN_FRAMES + SEARCH_CYCLE_FRAMES + 1));
   EXPECT_NEAR(command.body.turn, -SEARCH_TURN_SPEED, 1e-6f); // the next search turn
 }

@@ -7,15 +7,16 @@
 // penalised or fallen: stand (it gets up by itself); INITIAL, SET, FINISHED: stand; READY:
 // walk to the player number's kick-off position (a fixed legal formation in the own half,
 // outside the centre circle: the API does not say which team kicks off); PLAYING: the role's
-// skill, roles assigned from the team messages (assignRole) unless fixed. A striker, or a
-// supporter back home, that has not seen the ball for SEARCH_TURN_FRAMES turns on the spot
-// towards the side it was last seen on.
+// skill, roles assigned from the team messages (assignRole) unless fixed. A field player that
+// has not seen the ball for SEARCH_TURN_FRAMES searches (search.hpp: the team ball, else a
+// short turn on the spot and a walk to a search spot, in cycles).
 #include <cstdint>
 #include <optional>
 #include <string>
 
 #include "touchline/behaviour/skills/goalie.hpp"
 #include "touchline/behaviour/skills/look_for_ball.hpp"
+#include "touchline/behaviour/skills/search.hpp"
 #include "touchline/behaviour/skills/striker.hpp"
 #include "touchline/behaviour/skills/supporter.hpp"
 #include "touchline/behaviour/skills/team_comm.hpp"
@@ -24,11 +25,6 @@ namespace touchline::behaviour::skills {
 
 inline constexpr int32_t TEAM_BALL_SEEN_CHEST = 0x00ff00;     ///< green: the ball was seen recently
 inline constexpr int32_t TEAM_BALL_LOST_CHEST = 0xff0000;     ///< red: searching
-inline constexpr int SEARCH_TURN_FRAMES = 90;                 ///< frames (3 s) without the ball before turning to search
-inline constexpr float SEARCH_TURN_SPEED = 0.8f;              ///< rad/s
-inline constexpr int SEARCH_TURN_LIMIT_FRAMES = 220;          ///< frames of turning (5.9 rad, under a full turn)
-inline constexpr int SEARCH_CYCLE_FRAMES = 520;               ///< frames from one search turn to the next
-inline constexpr float HOME_NEAR_DIST = 300.f;                ///< mm: a supporter this close to home may turn to search
 inline constexpr float READY_GOALIE_X = GOALIE_HOME_X;        ///< mm: the kick-off formation (player 1 ...
 inline constexpr float READY_GOALIE_Y = 0.f;
 inline constexpr float READY_STRIKER_X = -700.f;              ///< mm: ... player 2, outside the 600 mm centre circle ...
@@ -43,8 +39,6 @@ inline constexpr float READY_MIDFIELDER_Y = 900.f;
 int formationRole(int playerNumber);
 /// (x, y) of the player's kick-off position, team frame, facing +x.
 FieldPoint readyPosition(int playerNumber);
-/// (x, y) a role walks back to while the ball is lost.
-FieldPoint homePosition(int role);
 /// This robot's TeamInfo from its Blackboard.
 TeamInfo messageInfo(const api::Blackboard& blackboard, int role);
 
@@ -59,9 +53,6 @@ class Team : public api::Behaviour {
  private:
   int chooseRole(const api::Blackboard& blackboard) const;
   api::ActionCommand::Body body(const api::Blackboard& blackboard);
-  /// Turn on the spot to find the ball: a striker, or a supporter at home, that has not seen
-  /// it for SEARCH_TURN_FRAMES.
-  bool searching(const api::Blackboard& blackboard) const;
 
   int fixedRole_;
   int role_;
@@ -71,6 +62,7 @@ class Team : public api::Behaviour {
   Midfielder midfielder_;
   GoToPose readyPose_;
   LookForBall head_;
+  Search search_;
   int64_t frame_ = 0;
 };
 

@@ -1,0 +1,50 @@
+#pragma once
+// Search: the body of a field player (not the goalie) that has not seen the ball for
+// SEARCH_TURN_FRAMES, so that a lost robot never turns on the spot for long. The port of
+// behaviour_py/skills/search.py (which says what it does); reads the Blackboard's
+// localisation, gameController and receiver, writes nothing.
+#include <optional>
+#include <vector>
+
+#include "touchline/behaviour/skills/field.hpp"
+#include "touchline/behaviour/skills/go_to_pose.hpp"
+#include "touchline/robot_api/blackboard.hpp"
+
+namespace touchline::behaviour::skills {
+
+inline constexpr int SEARCH_TURN_FRAMES = 90;         ///< frames (3 s) without the ball before searching
+inline constexpr float SEARCH_TURN_SPEED = 0.8f;      ///< rad/s
+inline constexpr int SEARCH_TURN_LIMIT_FRAMES = 150;  ///< frames of turning (4 rad, well under a full turn) ...
+inline constexpr int SEARCH_CYCLE_FRAMES = 520;       ///< ... of every cycle; the rest walks to a search spot
+inline constexpr float HOME_NEAR_DIST = 300.f;        ///< mm: a supporter this close to home may turn to search
+inline constexpr float SEARCH_SPOT_X = 1500.f;        ///< mm: the search spots are (X, 0), (0, Y), (-X, 0), (0, -Y) ...
+inline constexpr float SEARCH_SPOT_Y = 1200.f;        ///< mm: ... in turn, each 1.9 m from the next
+inline constexpr int SEARCH_SPOT_COUNT = 4;
+inline constexpr int STRIKER_FIRST_SPOT = 0;          ///< the striker searches the opponent half first, ...
+inline constexpr int MIDFIELDER_FIRST_SPOT = 1;       ///< ... the midfielder its own side ...
+inline constexpr int DEFENDER_FIRST_SPOT = 2;         ///< ... and the defender the own half
+
+/// (x, y) a role walks back to while the ball is lost.
+FieldPoint homePosition(int role);
+/// (x, y) of the ball as the teammates see it, or nullopt: the sighting of the teammate
+/// nearest to it among those whose message is fresh, says the ball was seen, and is not from
+/// a penalised robot (ties: the lower player number).
+std::optional<FieldPoint> teamBall(int playerNumber, const std::vector<api::TeamMessage>& messages, int64_t utime);
+/// (x, y, theta): where the role stands for the ball at (ballX, ballY): the striker behind it
+/// facing the opponent goal, a supporter at its algorithm's target facing it.
+api::AbsCoord teamBallTarget(int role, float ballX, float ballY, float robotY);
+/// (x, y) of the role's walk-th search spot (0: its first).
+FieldPoint searchSpot(int role, int walk);
+
+class Search {
+ public:
+  /// The body request of a field player of `role` searching, or nullopt while it has not lost
+  /// the ball for long enough, or plays the role's own skill (a supporter walking home).
+  std::optional<api::ActionCommand::Body> tick(const api::Blackboard& blackboard, int role);
+
+ private:
+  GoToPose teamBallPose_;
+  GoToPose spotPose_;
+};
+
+} // namespace touchline::behaviour::skills

@@ -1,0 +1,81 @@
+#include "touchline/behaviour/skills/search.hpp"
+
+#include <cmath>
+#include <tuple>
+#include <utility>
+
+#include "touchline/behaviour/skills/actioncommand.hpp"
+#include "touchline/behaviour/skills/ball.hpp"
+#include "touchline/behaviour/skills/goalie.hpp"
+#include "touchline/behaviour/skills/supporter.hpp"
+#include "touchline/behaviour/skills/team_comm.hpp"
+
+namespace touchline::behaviour::skills {
+
+using namespace api;
+
+FieldPoint homePosition(int role) {
+  if (role == ROLE_DEFENDER) return {DEF_HOME_X, DEF_HOME_Y};
+  if (role == ROLE_MIDFIELDER) return {MID_HOME_X, MID_HOME_Y};
+  return {GOALIE_HOME_X, 0.f};
+}
+
+std::optional<FieldPoint> teamBall(int playerNumber, const std::vector<TeamMessage>& messages, int64_t utime) {
+  std::optional<std::tuple<int, int, FieldPoint>> best; // (ball distance, player number, ball)
+  for (const TeamMessage& message : messages) {
+    if (message.playerNumber == playerNumber || utime - message.utime > MESSAGE_STALE_US) continue;
+    const std::optional<TeamInfo> info = decodeMessage(message.data);
+    if (!info || !info->ballSeen || info->penalised) continue;
+    const FieldPoint ball{static_cast<float>(info->ballX), static_cast<float>(info->ballY)};
+    const auto key = std::make_pair(info->ballDistance, info->playerNumber);
+    if (!best || key < std::make_pair(std::get<0>(*best), std::get<1>(*best)))
+      best = std::make_tuple(info->ballDistance, info->playerNumber, ball);
+  }
+  if (!best) return std::nullopt;
+  return std::get<2>(*best);
+}
+
+AbsCoord teamBallTarget(int role, float ballX, float ballY, float robotY) {
+  if (role == ROLE_STRIKER)
+    return pointBehindBall(AbsCoord{ballX, ballY, 0.f}, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, BEHIND_BALL_DIST);
+  FieldPoint target = role == ROLE_DEFENDER ? defenderTarget(ballX, ballY) : midfielderTarget(ballX, ballY, robotY);
+  target = supporterTarget(target.x, target.y, ballX, ballY, robotY);
+  return AbsCoord{target.x, target.y, std::atan2(ballY - target.y, ballX - target.x)};
+}
+
+FieldPoint searchSpot(int role, int walk) {
+  const int first = role == ROLE_STRIKER      ? STRIKER_FIRST_SPOT
+                    : role == ROLE_MIDFIELDER ? MIDFIELDER_FIRST_SPOT
+                                              : DEFENDER_FIRST_SPOT;
+  const int spot = (first + walk) % SEARCH_SPOT_COUNT;
+  const float sign = spot < 2 ? 1.f : -1.f;
+  return spot % 2 == 0 ? FieldPoint{sign * SEARCH_SPOT_X, 0.f} : FieldPoint{0.f, sign * SEARCH_SPOT_Y};
+}
+
+std::optional<ActionCommand::Body> Search::tick(const Blackboard& blackboard, int role) {
+  const int lost = blackboard.localisation.ballLostCount - SEARCH_TURN_FRAMES;
+  if (lost <= 0) return std::nullopt;
+  const AbsCoord pos = blackboard.localisation.robotPos;
+  const GameControllerBlackboard& gc = blackboard.gameController;
+  if (const auto ball = teamBall(gc.playerNumber, blackboard.receiver.messages, blackboard.utime)) {
+    const AbsCoord target = teamBallTarget(role, ball->x, ball->y, pos.y);
+    teamBallPose_.setTarget(target.x, target.y, target.theta);
+    return teamBallPose_.tick(blackboard).body;
+  }
+  const int cycle = (lost - 1) / SEARCH_CYCLE_FRAMES;
+  const int frame = (lost - 1) % SEARCH_CYCLE_FRAMES;
+  if (role != ROLE_STRIKER && cycle == 0) {
+    const FieldPoint home = homePosition(role);
+    if (frame >= SEARCH_TURN_LIMIT_FRAMES || distance(pos.x, pos.y, home.x, home.y) >= HOME_NEAR_DIST)
+      return std::nullopt;
+  }
+  if (frame < SEARCH_TURN_LIMIT_FRAMES) {
+    const float turn = blackboard.localisation.ballPosRR.heading >= 0.f ? SEARCH_TURN_SPEED : -SEARCH_TURN_SPEED;
+    return actioncommand::walk(0.f, 0.f, turn);
+  }
+  const FieldPoint spot = searchSpot(role, role == ROLE_STRIKER ? cycle : cycle - 1);
+  spotPose_.setTarget(spot.x, spot.y, 0.f);
+  return spotPose_.tick(blackboard).body;
+}
+
+} // namespace touchline::behaviour::skills

@@ -1,0 +1,115 @@
+"""Search: the body of a field player (not the goalie) that has not seen the ball for
+SEARCH_TURN_FRAMES, so that a lost robot never turns on the spot for long (issue #17; the
+thesis saw supporters spinning when lost). Reads the Blackboard's localisation, gameController
+and receiver; writes nothing.
+
+  team ball:  a teammate saw the ball recently (its message says so, is at most
+              MESSAGE_STALE_US old, and it is not penalised): walk to where the role stands
+              for that ball (the striker behind it, a supporter at its algorithm's target),
+              ending facing it. Of several, the nearest to its seer counts (ties: the lower
+              player number).
+  otherwise:  cycles of SEARCH_CYCLE_FRAMES: turn on the spot for SEARCH_TURN_LIMIT_FRAMES
+              towards the side the ball was last seen on (under a full turn), then walk to
+              the cycle's search spot (four round the centre circle in turn, each role
+              starting at its own), the head scanning all the while. A supporter's first cycle is the thesis's:
+              it walks home, and turns only there.
+"""
+import math
+
+import actioncommand
+import robot
+
+from .ball import BEHIND_BALL_DIST, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, pointBehindBall
+from .field import distance
+from .goalie import GOALIE_HOME_X
+from .go_to_pose import GoToPose
+from .supporter import DEF_HOME_X, DEF_HOME_Y, MID_HOME_X, MID_HOME_Y, defenderTarget, midfielderTarget, supporterTarget
+from .team_comm import MESSAGE_STALE_US, ROLE_DEFENDER, ROLE_MIDFIELDER, ROLE_STRIKER, decodeMessage
+
+SEARCH_TURN_FRAMES = 90          # frames (3 s) without the ball before searching
+SEARCH_TURN_SPEED = 0.8          # rad/s
+SEARCH_TURN_LIMIT_FRAMES = 150   # frames of turning (4 rad, well under a full turn) ...
+SEARCH_CYCLE_FRAMES = 520        # ... of every cycle; the rest walks to a search spot
+HOME_NEAR_DIST = 300.0           # mm: a supporter this close to home may turn to search
+SEARCH_SPOT_X = 1500.0           # mm: the search spots are (X, 0), (0, Y), (-X, 0), (0, -Y), in turn ...
+SEARCH_SPOT_Y = 1200.0           # mm: ... each 1.9 m from the next
+SEARCH_SPOT_COUNT = 4
+STRIKER_FIRST_SPOT = 0           # the striker searches the opponent half first, ...
+MIDFIELDER_FIRST_SPOT = 1        # ... the midfielder its own side ...
+DEFENDER_FIRST_SPOT = 2          # ... and the defender the own half
+
+
+def homePosition(role):
+    """(x, y) a role walks back to while the ball is lost."""
+    if role == ROLE_DEFENDER:
+        return DEF_HOME_X, DEF_HOME_Y
+    if role == ROLE_MIDFIELDER:
+        return MID_HOME_X, MID_HOME_Y
+    return GOALIE_HOME_X, 0.0
+
+
+def teamBall(playerNumber, messages, utime):
+    """(x, y) of the ball as the teammates see it, or None: the sighting of the teammate
+    nearest to it among those whose message is fresh, says the ball was seen, and is not
+    from a penalised robot."""
+    best = None
+    for message in messages:
+        if message.playerNumber == playerNumber or utime - message.utime > MESSAGE_STALE_US:
+            continue
+        info = decodeMessage(message.data)
+        if info is None or not info.ballSeen or info.penalised:
+            continue
+        key = (info.ballDistance, info.playerNumber)
+        if best is None or key < best[0]:
+            best = (key, info.ballX, info.ballY)
+    return None if best is None else (float(best[1]), float(best[2]))
+
+
+def teamBallTarget(role, ballX, ballY, robotY):
+    """(x, y, theta): where the role stands for the ball at (ballX, ballY): the striker
+    behind it facing the opponent goal, a supporter at its algorithm's target facing it."""
+    if role == ROLE_STRIKER:
+        return pointBehindBall(robot.AbsCoord(ballX, ballY, 0.0), OPPONENT_GOAL_X, OPPONENT_GOAL_Y, BEHIND_BALL_DIST)
+    if role == ROLE_DEFENDER:
+        x, y = defenderTarget(ballX, ballY)
+    else:
+        x, y = midfielderTarget(ballX, ballY, robotY)
+    x, y = supporterTarget(x, y, ballX, ballY, robotY)
+    return x, y, math.atan2(ballY - y, ballX - x)
+
+
+def searchSpot(role, walk):
+    """(x, y) of the role's walk-th search spot (0: its first)."""
+    first = {ROLE_STRIKER: STRIKER_FIRST_SPOT, ROLE_MIDFIELDER: MIDFIELDER_FIRST_SPOT}.get(role, DEFENDER_FIRST_SPOT)
+    spot = (first + walk) % SEARCH_SPOT_COUNT
+    sign = 1.0 if spot < 2 else -1.0
+    return (sign * SEARCH_SPOT_X, 0.0) if spot % 2 == 0 else (0.0, sign * SEARCH_SPOT_Y)
+
+
+class Search:
+    def __init__(self):
+        self.teamBallPose = GoToPose()
+        self.spotPose = GoToPose()
+
+    def tick(self, blackboard, role):
+        """The body request of a field player of `role` searching, or None while it has not
+        lost the ball for long enough, or plays the role's own skill (a supporter walking home)."""
+        lost = blackboard.localisation.ballLostCount - SEARCH_TURN_FRAMES
+        if lost <= 0:
+            return None
+        pos = blackboard.localisation.robotPos
+        ball = teamBall(blackboard.gameController.playerNumber, blackboard.receiver.messages, blackboard.utime)
+        if ball is not None:
+            self.teamBallPose.setTarget(*teamBallTarget(role, ball[0], ball[1], pos.y))
+            return self.teamBallPose.tick(blackboard).body
+        cycle, frame = divmod(lost - 1, SEARCH_CYCLE_FRAMES)
+        if role != ROLE_STRIKER and cycle == 0:
+            homeX, homeY = homePosition(role)
+            if frame >= SEARCH_TURN_LIMIT_FRAMES or distance(pos.x, pos.y, homeX, homeY) >= HOME_NEAR_DIST:
+                return None
+        if frame < SEARCH_TURN_LIMIT_FRAMES:
+            turn = SEARCH_TURN_SPEED if blackboard.localisation.ballPosRR.heading >= 0.0 else -SEARCH_TURN_SPEED
+            return actioncommand.walk(turn=turn)
+        x, y = searchSpot(role, cycle if role == ROLE_STRIKER else cycle - 1)
+        self.spotPose.setTarget(x, y, 0.0)
+        return self.spotPose.tick(blackboard).body

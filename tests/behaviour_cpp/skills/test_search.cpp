@@ -1,0 +1,140 @@
+// Search (issue #17: no turning on the spot for long when the ball is lost): the team ball,
+// the search cycle of turns and walks to search spots; the same hand-worked cases as
+// tests/behaviour_py/test_search.py.
+#include "touchline/behaviour/skills/search.hpp"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "boards.hpp"
+#include "touchline/behaviour/skills/team.hpp"
+#include "touchline/behaviour/skills/team_comm.hpp"
+
+using namespace touchline::api;
+using namespace touchline::behaviour::skills;
+using touchline::behaviour::test::teamBoard;
+
+namespace {
+
+using AT = ActionCommand::ActionType;
+constexpr int64_t NOW = 10000000;
+
+/// Teammate `number`'s message: it sees the ball at (x, y) from `distance` mm
+/// (NO_BALL_DISTANCE: it does not).
+TeamMessage sighting(int number, int distance, int x, int y, bool penalised = false, int64_t age = 0) {
+  const TeamInfo info{number, ROLE_DEFENDER, distance != NO_BALL_DISTANCE, penalised, false, distance, x, y};
+  return {number, NOW - age, encodeMessage(info)};
+}
+
+void expectBall(const std::optional<FieldPoint>& ball, float x, float y) {
+  ASSERT_TRUE(ball.has_value());
+  EXPECT_EQ(ball->x, x);
+  EXPECT_EQ(ball->y, y);
+}
+
+void expectPose(const AbsCoord& p, float x, float y, float theta) {
+  EXPECT_NEAR(p.x, x, 1e-3f);
+  EXPECT_NEAR(p.y, y, 1e-3f);
+  EXPECT_NEAR(p.theta, theta, 1e-5f);
+}
+
+/// A robot at pos that last saw the ball at (ballX, ballY) SEARCH_TURN_FRAMES + lost frames ago.
+Blackboard lostBoard(AbsCoord pos, float ballX, float ballY, int lost, std::vector<TeamMessage> messages = {}) {
+  return teamBoard(pos, ballX, ballY, false, SEARCH_TURN_FRAMES + lost, GameState::PLAYING, 2, false, false,
+                   std::move(messages), NOW);
+}
+
+} // namespace
+
+TEST(Search, TheTeamBallIsTheNearestFreshSighting) {
+  EXPECT_FALSE(teamBall(2, {}, NOW).has_value());
+  expectBall(teamBall(2, {sighting(3, 900, 100, 200), sighting(4, 700, -500, 300)}, NOW), -500.f, 300.f);
+  expectBall(teamBall(2, {sighting(4, 700, -500, 300), sighting(3, 700, 100, 200)}, NOW), 100.f, 200.f); // tie: lower
+  expectBall(teamBall(2, {sighting(3, 900, 100, 200), sighting(4, NO_BALL_DISTANCE, -500, 300)}, NOW), 100.f, 200.f);
+}
+
+TEST(Search, StalePenalisedAndOwnSightingsDoNotCount) {
+  EXPECT_FALSE(teamBall(2, {sighting(3, 900, 100, 200, false, MESSAGE_STALE_US + 1)}, NOW).has_value());
+  expectBall(teamBall(2, {sighting(3, 900, 100, 200, false, MESSAGE_STALE_US)}, NOW), 100.f, 200.f);
+  EXPECT_FALSE(teamBall(2, {sighting(3, 900, 100, 200, true)}, NOW).has_value());
+  EXPECT_FALSE(teamBall(2, {sighting(2, 900, 100, 200)}, NOW).has_value());
+}
+
+TEST(Search, TheRolesStandForTheTeamBallAsForTheirOwn) {
+  expectPose(teamBallTarget(ROLE_STRIKER, 1000.f, 0.f, 0.f), 800.f, 0.f, 0.f);
+  expectPose(teamBallTarget(ROLE_DEFENDER, 0.f, 600.f, 0.f), -1250.f, 350.f, std::atan2(250.f, 1250.f));
+  expectPose(teamBallTarget(ROLE_MIDFIELDER, 2100.f, 0.f, 100.f), 2200.f, 500.f, std::atan2(-500.f, -100.f));
+}
+
+TEST(Search, ALostRobotWalksToTheTeamBallInsteadOfTurning) {
+  // Own ball last seen on the right: alone it would turn right; the teammate sees it ahead-left.
+  auto body = Search().tick(lostBoard({0.f, 0.f, 0.f}, 0.f, -1000.f, 1, {sighting(3, 600, 1000, 1000)}), ROLE_STRIKER);
+  ASSERT_TRUE(body.has_value());
+  EXPECT_EQ(body->actionType, AT::WALK);
+  EXPECT_GT(body->turn, 0.f); // turning to face the team ball's spot, then walking
+  body = Search().tick(lostBoard({0.f, 0.f, 0.f}, 1000.f, 0.f, 1, {sighting(3, 600, 2000, 0)}), ROLE_STRIKER);
+  ASSERT_TRUE(body.has_value());
+  EXPECT_EQ(body->actionType, AT::WALK);
+  EXPECT_GT(body->forward, 0.f);
+  EXPECT_NEAR(body->turn, 0.f, 1e-6f);
+  // Not lost for long enough: the role's own skill plays.
+  EXPECT_FALSE(Search().tick(lostBoard({0.f, 0.f, 0.f}, 1000.f, 0.f, 0, {sighting(3, 600, 2000, 0)}), ROLE_STRIKER));
+}
+
+TEST(Search, SearchSpotsCycleRoundTheCentreCircleFromEachRolesOwn) {
+  const FieldPoint expected[] = {{1500.f, 0.f}, {0.f, 1200.f}, {-1500.f, 0.f}, {0.f, -1200.f}, {1500.f, 0.f}};
+  for (int k = 0; k < 5; ++k) {
+    EXPECT_EQ(searchSpot(ROLE_STRIKER, k).x, expected[k].x);
+    EXPECT_EQ(searchSpot(ROLE_STRIKER, k).y, expected[k].y);
+  }
+  EXPECT_EQ(searchSpot(ROLE_MIDFIELDER, 0).y, 1200.f);
+  EXPECT_EQ(searchSpot(ROLE_DEFENDER, 0).x, -1500.f);
+}
+
+TEST(Search, TheStrikerTurnsBrieflyThenWalksToASearchSpot) {
+  const auto body = [](int lost, AbsCoord pos = {0.f, 0.f, 0.f}) {
+    const auto b = Search().tick(lostBoard(pos, 0.f, -1000.f, lost), ROLE_STRIKER);
+    EXPECT_TRUE(b.has_value());
+    return b.value_or(ActionCommand::Body{});
+  };
+  EXPECT_NEAR(body(1).turn, -SEARCH_TURN_SPEED, 1e-6f); // towards the side it was last seen on
+  EXPECT_NEAR(body(SEARCH_TURN_LIMIT_FRAMES).turn, -SEARCH_TURN_SPEED, 1e-6f);
+  EXPECT_LT(SEARCH_TURN_LIMIT_FRAMES / 30.f * SEARCH_TURN_SPEED, 2 * kPi); // never a full turn on the spot
+  auto walk = body(SEARCH_TURN_LIMIT_FRAMES + 1); // to (1500, 0), straight ahead
+  EXPECT_EQ(walk.actionType, AT::WALK);
+  EXPECT_GT(walk.forward, 0.f);
+  EXPECT_NEAR(walk.turn, 0.f, 1e-6f);
+  EXPECT_NEAR(body(SEARCH_CYCLE_FRAMES + 1).turn, -SEARCH_TURN_SPEED, 1e-6f); // the next cycle's turn ...
+  walk = body(SEARCH_CYCLE_FRAMES + SEARCH_TURN_LIMIT_FRAMES + 1, {1500.f, 0.f, 0.f}); // ... then to (0, 1200)
+  EXPECT_EQ(walk.actionType, AT::WALK);
+  EXPECT_NEAR(walk.forward, 0.f, 1e-6f);
+  EXPECT_GT(walk.turn, 0.f);
+}
+
+TEST(Search, ASupporterGoesHomeFirstThenSearchesFromSpotToSpot) {
+  const auto body = [](int lost, AbsCoord pos) {
+    return Search().tick(lostBoard(pos, 0.f, 1000.f, lost), ROLE_MIDFIELDER);
+  };
+  EXPECT_FALSE(body(1, {0.f, 0.f, 0.f})); // away from home (0, 800): the thesis walks home
+  const auto turn = body(1, {0.f, 800.f - HOME_NEAR_DIST + 1.f, 0.f}); // home: turns
+  ASSERT_TRUE(turn);
+  EXPECT_NEAR(turn->turn, SEARCH_TURN_SPEED, 1e-6f);
+  EXPECT_FALSE(body(SEARCH_TURN_LIMIT_FRAMES + 1, {0.f, 800.f, 0.f})); // then the thesis stands at home
+  const auto anywhere = body(SEARCH_CYCLE_FRAMES + 1, {0.f, 0.f, 0.f}); // turns anywhere
+  ASSERT_TRUE(anywhere);
+  EXPECT_NEAR(anywhere->turn, SEARCH_TURN_SPEED, 1e-6f);
+  const auto walk = body(SEARCH_CYCLE_FRAMES + SEARCH_TURN_LIMIT_FRAMES + 1, {0.f, 800.f, 0.f}); // to (0, 1200)
+  ASSERT_TRUE(walk);
+  EXPECT_EQ(walk->actionType, AT::WALK);
+  EXPECT_GT(walk->turn, 0.f);
+}
+
+TEST(Search, TheTeamSearchesButTheGoalieKeepsItsBox) {
+  Team striker(ROLE_STRIKER);
+  EXPECT_NEAR(striker.tick(lostBoard({0.f, 0.f, 0.f}, 0.f, -1000.f, 1)).body.turn, -SEARCH_TURN_SPEED, 1e-6f);
+  Team goalie;
+  Blackboard board = lostBoard({-2700.f, 0.f, 0.f}, 0.f, -1000.f, 1);
+  board.gameController.playerNumber = 1; // the goalie at home: stands
+  EXPECT_EQ(goalie.tick(board).body.actionType, AT::STAND);
+}

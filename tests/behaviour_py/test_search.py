@@ -1,0 +1,106 @@
+"""Search (issue #17: no turning on the spot for long when the ball is lost): the team ball,
+the search cycle of turns and walks to search spots; the same hand-worked cases as
+tests/behaviour_cpp/skills/test_search.cpp."""
+import math
+
+import pytest
+import robot
+from boards import board, message
+
+from skills.search import (HOME_NEAR_DIST, SEARCH_CYCLE_FRAMES, SEARCH_TURN_FRAMES, SEARCH_TURN_LIMIT_FRAMES,
+                           SEARCH_TURN_SPEED, Search, searchSpot, teamBall, teamBallTarget)
+from skills.team import Team
+from skills.team_comm import (MESSAGE_STALE_US, NO_BALL_DISTANCE, ROLE_DEFENDER, ROLE_MIDFIELDER, ROLE_STRIKER,
+                              TeamInfo, encodeMessage)
+
+WALK = robot.ActionType.WALK
+STAND = robot.ActionType.STAND
+NOW = 10000000
+
+
+def sighting(number, distance, x, y, penalised=False, age=0):
+    """Teammate `number`'s message: it sees the ball at (x, y) from `distance` mm
+    (NO_BALL_DISTANCE: it does not)."""
+    info = TeamInfo(number, ROLE_DEFENDER, distance != NO_BALL_DISTANCE, penalised, False, distance, x, y)
+    return message(number, encodeMessage(info), NOW - age)
+
+
+def test_the_team_ball_is_the_nearest_fresh_sighting():
+    assert teamBall(2, [], NOW) is None
+    assert teamBall(2, [sighting(3, 900, 100, 200), sighting(4, 700, -500, 300)], NOW) == (-500.0, 300.0)
+    assert teamBall(2, [sighting(4, 700, -500, 300), sighting(3, 700, 100, 200)], NOW) == (100.0, 200.0)  # tie: lower
+    assert teamBall(2, [sighting(3, 900, 100, 200), sighting(4, NO_BALL_DISTANCE, -500, 300)], NOW) == (100.0, 200.0)
+
+
+def test_stale_penalised_and_own_sightings_do_not_count():
+    assert teamBall(2, [sighting(3, 900, 100, 200, age=MESSAGE_STALE_US + 1)], NOW) is None
+    assert teamBall(2, [sighting(3, 900, 100, 200, age=MESSAGE_STALE_US)], NOW) == (100.0, 200.0)
+    assert teamBall(2, [sighting(3, 900, 100, 200, penalised=True)], NOW) is None
+    assert teamBall(2, [sighting(2, 900, 100, 200)], NOW) is None
+
+
+def test_the_roles_stand_for_the_team_ball_as_for_their_own():
+    # Striker: 200 mm behind the ball on the goal-ball line, facing the goal.
+    x, y, theta = teamBallTarget(ROLE_STRIKER, 1000.0, 0.0, 0.0)
+    assert (x, y, theta) == pytest.approx((800.0, 0.0, 0.0))
+    # Defender (Algorithm 4.2): ball at 0 -> 1250 behind it on the goal line, facing it.
+    x, y, theta = teamBallTarget(ROLE_DEFENDER, 0.0, 600.0, 0.0)
+    assert (x, y, theta) == pytest.approx((-1250.0, 350.0, math.atan2(250.0, 1250.0)))
+    # Midfielder (Algorithm 4.1): ball beyond 2000 -> (2200, 0), off the shooting path, facing the ball behind.
+    x, y, theta = teamBallTarget(ROLE_MIDFIELDER, 2100.0, 0.0, 100.0)
+    assert (x, y, theta) == pytest.approx((2200.0, 500.0, math.atan2(-500.0, -100.0)))
+
+
+def test_a_lost_robot_walks_to_the_team_ball_instead_of_turning():
+    # Own ball last seen on the right: alone it would turn right; the teammate sees it ahead-left.
+    lost = board((0.0, 0.0, 0.0), ball=(0.0, -1000.0), seen=False, lost=SEARCH_TURN_FRAMES + 1, utime=NOW,
+                 messages=[sighting(3, 600, 1000, 1000)])
+    body = Search().tick(lost, ROLE_STRIKER)
+    assert body.actionType == WALK and body.turn > 0.0  # turning to face the team ball's spot, then walking
+    body = Search().tick(board((0.0, 0.0, 0.0), seen=False, lost=SEARCH_TURN_FRAMES + 1, utime=NOW,
+                               messages=[sighting(3, 600, 2000, 0)]), ROLE_STRIKER)
+    assert body.actionType == WALK and body.forward > 0.0 and body.turn == pytest.approx(0.0)
+    # Not lost for long enough: the role's own skill plays.
+    assert Search().tick(board(seen=False, lost=SEARCH_TURN_FRAMES, utime=NOW,
+                               messages=[sighting(3, 600, 2000, 0)]), ROLE_STRIKER) is None
+
+
+def test_search_spots_cycle_round_the_centre_circle_from_each_roles_own():
+    assert [searchSpot(ROLE_STRIKER, k) for k in range(5)] == [(1500.0, 0.0), (0.0, 1200.0), (-1500.0, 0.0),
+                                                               (0.0, -1200.0), (1500.0, 0.0)]
+    assert searchSpot(ROLE_MIDFIELDER, 0) == (0.0, 1200.0)
+    assert searchSpot(ROLE_DEFENDER, 0) == (-1500.0, 0.0)
+
+
+def test_the_striker_turns_briefly_then_walks_to_a_search_spot():
+    def body(lost, pos=(0.0, 0.0, 0.0)):
+        return Search().tick(board(pos, ball=(0.0, -1000.0), seen=False, lost=SEARCH_TURN_FRAMES + lost), ROLE_STRIKER)
+
+    assert body(1).turn == pytest.approx(-SEARCH_TURN_SPEED)  # towards the side it was last seen on
+    assert body(SEARCH_TURN_LIMIT_FRAMES).turn == pytest.approx(-SEARCH_TURN_SPEED)
+    assert SEARCH_TURN_LIMIT_FRAMES / 30.0 * SEARCH_TURN_SPEED < 2 * math.pi  # never a full turn on the spot
+    walk = body(SEARCH_TURN_LIMIT_FRAMES + 1)  # to (1500, 0), straight ahead
+    assert walk.actionType == WALK and walk.forward > 0.0 and walk.turn == pytest.approx(0.0)
+    assert body(SEARCH_CYCLE_FRAMES + 1).turn == pytest.approx(-SEARCH_TURN_SPEED)  # the next cycle's turn ...
+    walk = body(SEARCH_CYCLE_FRAMES + SEARCH_TURN_LIMIT_FRAMES + 1, pos=(1500.0, 0.0, 0.0))  # ... then to (0, 1200)
+    assert walk.actionType == WALK and walk.forward == pytest.approx(0.0) and walk.turn > 0.0
+
+
+def test_a_supporter_goes_home_first_then_searches_from_spot_to_spot():
+    def body(lost, pos):
+        return Search().tick(board(pos, ball=(0.0, 1000.0), seen=False, lost=SEARCH_TURN_FRAMES + lost),
+                             ROLE_MIDFIELDER)
+
+    assert body(1, (0.0, 0.0, 0.0)) is None  # away from home (0, 800): the thesis walks home
+    assert body(1, (0.0, 800.0 - HOME_NEAR_DIST + 1.0, 0.0)).turn == pytest.approx(SEARCH_TURN_SPEED)  # home: turns
+    assert body(SEARCH_TURN_LIMIT_FRAMES + 1, (0.0, 800.0, 0.0)) is None  # then the thesis stands at home
+    assert body(SEARCH_CYCLE_FRAMES + 1, (0.0, 0.0, 0.0)).turn == pytest.approx(SEARCH_TURN_SPEED)  # turns anywhere
+    walk = body(SEARCH_CYCLE_FRAMES + SEARCH_TURN_LIMIT_FRAMES + 1, (0.0, 800.0, 0.0))  # to its first spot (0, 1200)
+    assert walk.actionType == WALK and walk.turn > 0.0
+
+
+def test_the_team_searches_but_the_goalie_keeps_its_box():
+    lost = dict(ball=(0.0, -1000.0), seen=False, lost=SEARCH_TURN_FRAMES + 1)
+    assert Team(ROLE_STRIKER).tick(board((0.0, 0.0, 0.0), **lost)).body.turn == pytest.approx(-SEARCH_TURN_SPEED)
+    command = Team().tick(board((-2700.0, 0.0, 0.0), player=1, **lost))  # the goalie at home: stands
+    assert command.body.actionType == STAND
