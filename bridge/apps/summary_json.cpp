@@ -1,9 +1,9 @@
 #include "touchline/apps/summary_json.hpp"
 
-#include <cstdio>
 #include <fstream>
-#include <iomanip>
 #include <stdexcept>
+
+#include <nlohmann/json.hpp>
 
 #include "touchline/lcm/world_messages.hpp"
 
@@ -11,23 +11,31 @@ namespace touchline::apps {
 
 namespace {
 
-/// `text` as the inside of a JSON string.
-std::string json_escaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      char code[8];
-      std::snprintf(code, sizeof code, "\\u%04x", c);
-      out += code;
-    } else {
-      out += c;
-    }
+using nlohmann::json;
+
+json robot_rows(const sim::Match& match, const sim::TruthFrame& truth) {
+  json rows = json::array();
+  for (const auto& r : truth.robots) {
+    const sim::Member* m = match.roster().find(r.truth.id);
+    rows.push_back({{"team", r.truth.id.team},
+                    {"player", r.truth.id.player},
+                    {"active", r.active},
+                    {"frames_answered", m ? m->frames_answered : 0},
+                    {"frames_missed", m ? m->frames_missed : 0},
+                    {"behaviour_cpu_us_mean", m ? m->behaviour_cpu_us_mean() : 0},
+                    {"behaviour_cpu_us_max", m ? m->behaviour_cpu_us_max : 0},
+                    {"localisation_rms_mm", m ? m->localisation_rms_mm() : 0},
+                    {"localisation_rms_rad", m ? m->localisation_rms_rad() : 0},
+                    {"penalised", r.penalised},
+                    {"x_mm", r.truth.body.x_mm},
+                    {"y_mm", r.truth.body.y_mm},
+                    {"theta_rad", r.truth.body.theta_rad}});
   }
-  return out;
+  return rows;
 }
+
+/// A ratio that is 0, not a division by zero, before anything was timed.
+double per(double numerator, double denominator) { return denominator > 0 ? numerator / denominator : 0; }
 
 } // namespace
 
@@ -36,57 +44,48 @@ void write_summary_json(const std::string& path, const sim::Match& match, const 
   std::ofstream out(path);
   if (!out) throw std::runtime_error("cannot write summary to " + path);
   const sim::TruthFrame truth = match.truth();
-  out << std::setprecision(9) << "{\n"
-      << "  \"seed\": " << seed << ",\n"
-      << "  \"frames\": " << s.frames << ",\n"
-      << "  \"sim_s\": " << s.sim_s << ",\n"
-      << "  \"wall_s\": " << s.wall_s << ",\n"
-      << "  \"rtf\": " << (s.wall_s > 0 ? s.sim_s / s.wall_s : 0) << ",\n"
-      << "  \"truth_hash\": \"" << transport::hex_hash(s.truth_hash) << "\",\n"
-      << "  \"malformed\": " << s.malformed << ",\n"
-      << "  \"stale\": " << s.stale << ",\n"
-      << "  \"future\": " << s.future << ",\n"
-      << "  \"duplicates\": " << s.duplicates << ",\n"
-      << "  \"implausible\": " << s.implausible << ",\n"
-      << "  \"unauthenticated\": " << s.unauthenticated << ",\n"
-      << "  \"handler_failures\": " << s.handler_failures << ",\n"
-      << "  \"resent_senses\": " << s.resent_senses << ",\n"
-      << "  \"interrupted\": " << (s.interrupted ? "true" : "false") << ",\n"
-      << "  \"comm\": {\"sent\": " << match.comm().sent() << ", \"delivered\": " << match.comm().delivered()
-      << ", \"lost\": " << match.comm().lost() << ", \"refused\": " << match.comm().refused() << "},\n"
-      << "  \"score\": [" << match.game().score[0] << ", " << match.game().score[1] << "],\n"
-      << "  \"ball\": {\"x_mm\": " << truth.ball.x_mm << ", \"y_mm\": " << truth.ball.y_mm << "},\n"
-      << "  \"robots\": [";
-  for (size_t i = 0; i < truth.robots.size(); ++i) {
-    const auto& r = truth.robots[i];
-    const sim::Member* m = match.roster().find(r.truth.id);
-    out << (i ? ",\n" : "\n") << "    {\"team\": " << r.truth.id.team << ", \"player\": " << r.truth.id.player
-        << ", \"active\": " << (r.active ? "true" : "false")
-        << ", \"frames_answered\": " << (m ? m->frames_answered : 0)
-        << ", \"frames_missed\": " << (m ? m->frames_missed : 0)
-        << ", \"behaviour_cpu_us_mean\": " << (m ? m->behaviour_cpu_us_mean() : 0)
-        << ", \"behaviour_cpu_us_max\": " << (m ? m->behaviour_cpu_us_max : 0)
-        << ", \"localisation_rms_mm\": " << (m ? m->localisation_rms_mm() : 0)
-        << ", \"localisation_rms_rad\": " << (m ? m->localisation_rms_rad() : 0)
-        << ", \"penalised\": " << (r.penalised ? "true" : "false") << ", \"x_mm\": " << r.truth.body.x_mm
-        << ", \"y_mm\": " << r.truth.body.y_mm << ", \"theta_rad\": " << r.truth.body.theta_rad << "}";
-  }
-  out << "\n  ]";
+  json summary = {
+      {"seed", seed},
+      {"frames", s.frames},
+      {"sim_s", s.sim_s},
+      {"wall_s", s.wall_s},
+      {"rtf", per(s.sim_s, s.wall_s)},
+      {"truth_hash", transport::hex_hash(s.truth_hash)},
+      {"malformed", s.malformed},
+      {"stale", s.stale},
+      {"future", s.future},
+      {"duplicates", s.duplicates},
+      {"implausible", s.implausible},
+      {"unauthenticated", s.unauthenticated},
+      {"handler_failures", s.handler_failures},
+      {"resent_senses", s.resent_senses},
+      {"interrupted", s.interrupted},
+      {"comm",
+       {{"sent", match.comm().sent()},
+        {"delivered", match.comm().delivered()},
+        {"lost", match.comm().lost()},
+        {"refused", match.comm().refused()}}},
+      {"score", {match.game().score[0], match.game().score[1]}},
+      {"ball", {{"x_mm", truth.ball.x_mm}, {"y_mm", truth.ball.y_mm}}},
+      {"robots", robot_rows(match, truth)},
+  };
   if (extras) {
-    const std::vector<sim::MatchEvent>& events = extras->events;
-    out << ",\n  \"world_wall_s\": " << extras->world_wall_s << ",\n  \"physics_rtf\": "
-        << (extras->world_wall_s > 0 ? s.sim_s / extras->world_wall_s : 0) << ",\n  \"cpu_s\": " << extras->cpu_s
-        << ",\n  \"cpu_rtf\": " << (extras->cpu_s > 0 ? s.sim_s / extras->cpu_s : 0);
-    out << ",\n  \"match_events\": [";
-    for (size_t i = 0; i < events.size(); ++i) {
-      const match_event_t e = transport::to_msg(events[i]);
-      out << (i ? ",\n" : "\n") << "    {\"utime\": " << e.utime << ", \"kind\": " << int{e.kind}
-          << ", \"team\": " << int{e.team} << ", \"player\": " << int{e.player} << ", \"text\": \""
-          << json_escaped(e.text) << "\"}";
+    summary["world_wall_s"] = extras->world_wall_s;
+    summary["physics_rtf"] = per(s.sim_s, extras->world_wall_s);
+    summary["cpu_s"] = extras->cpu_s;
+    summary["cpu_rtf"] = per(s.sim_s, extras->cpu_s);
+    json events = json::array();
+    for (const sim::MatchEvent& event : extras->events) {
+      const match_event_t e = transport::to_msg(event);
+      events.push_back({{"utime", e.utime}, {"kind", int{e.kind}}, {"team", int{e.team}}, {"player", int{e.player}},
+                        {"text", e.text}});
     }
-    out << "\n  ]";
+    summary["match_events"] = std::move(events);
   }
-  out << "\n}\n";
+  // Invalid UTF-8 in an event's text is replaced rather than thrown on: the summary is
+  // written at the end of a whole match.
+  out << summary.dump(2, ' ', false, json::error_handler_t::replace) << "\n";
+  if (!out) throw std::runtime_error("cannot write summary to " + path);
 }
 
 } // namespace touchline::apps
