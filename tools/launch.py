@@ -353,10 +353,11 @@ class Launcher:
         for team, player, x, y, theta in targets:
             keeper.start(team, player, shim_command(a, bin_shim, team, player, robot_behaviour(a, team, (x, y, theta))))
         self.announce(match)
+        kickoff_line = f"launch: kick-off, all {2 * match.team_size} robots joined"
         announced = False
         while world.poll() is None:
             if watch.kicked_off and not announced:  # from here on a dying shim no longer stops the match
-                watch.say(f"launch: kick-off, all {2 * match.team_size} robots joined")
+                watch.say(kickoff_line)
                 announced = True
             if (rc := self.interrupted()) is not None:
                 return rc
@@ -374,7 +375,7 @@ class Launcher:
             return EXIT_FAILED
         keeper.after_match(SHIMS_EXIT_S, lambda: self.stop.signum is not None)  # they end on FINISHED
         if watch.kicked_off and not announced:  # a match shorter than one look of the loop above
-            watch.say(f"launch: kick-off, all {2 * match.team_size} robots joined")
+            watch.say(kickoff_line)
         watch.stop()  # the bar ends before the summary starts
         if (rc := self.interrupted()) is not None:
             return rc

@@ -201,14 +201,17 @@ int main(int argc, char** argv) {
     transport::TruthHash truth_hash;
     std::optional<transport::MatchRecorder> recorder;
     if (!log_path.empty()) recorder.emplace(log_path);
-    const auto record = [&](const char* channel, const std::vector<uint8_t>& bytes) {
-      if (!recorder) return;
+    const auto record_bytes = [&](const char* channel, const std::vector<uint8_t>& bytes) {
       recorder->record(channel, bytes.data(), static_cast<int>(bytes.size()), match.utime());
       if (!recorder->error().empty()) throw std::runtime_error(recorder->error()); // no log with a hole
     };
+    // Messages are encoded only when there is a log to write them to.
+    const auto record = [&](const char* channel, const auto& msg) {
+      if (recorder) record_bytes(channel, transport::encoded(msg));
+    };
     play->start();
-    record(transport::kMatchChannel, transport::encoded(transport::to_lcm(config, seed, match.utime())));
-    record(transport::kGameChannel, transport::encoded(transport::to_msg(match.game(), match.utime())));
+    record(transport::kMatchChannel, transport::to_lcm(config, seed, match.utime()));
+    record(transport::kGameChannel, transport::to_msg(match.game(), match.utime()));
     const auto start = std::chrono::steady_clock::now();
     const double start_cpu_s = process_cpu_s();
     const auto wall_s = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
@@ -218,20 +221,20 @@ int main(int argc, char** argv) {
       play->step_frame();
       const std::vector<uint8_t> truth = transport::encoded(transport::to_msg(match.truth()));
       truth_hash.add(truth.data(), truth.size());
-      record(transport::kTruthChannel, truth);
+      if (recorder) record_bytes(transport::kTruthChannel, truth);
       std::vector<sim::MatchEvent> new_events = match.take_events();
-      for (const sim::MatchEvent& event : new_events) record(transport::kEventChannel, transport::encoded(transport::to_msg(event)));
+      for (const sim::MatchEvent& event : new_events) record(transport::kEventChannel, transport::to_msg(event));
       // The game as the world node says it: at once when it changed, else once a second.
       if (!new_events.empty() || match.frame() % kFramesPerSecond == 0)
-        record(transport::kGameChannel, transport::encoded(transport::to_msg(match.game(), match.utime())));
+        record(transport::kGameChannel, transport::to_msg(match.game(), match.utime()));
       for (sim::MatchEvent& event : new_events) events.push_back(std::move(event));
       if (!quiet && match.frame() % (10 * kFramesPerSecond) == 0) print_progress(match, wall_s());
     }
     for (sim::MatchEvent& event : match.take_events()) {
-      record(transport::kEventChannel, transport::encoded(transport::to_msg(event)));
+      record(transport::kEventChannel, transport::to_msg(event));
       events.push_back(std::move(event));
     }
-    record(transport::kGameChannel, transport::encoded(transport::to_msg(match.game(), match.utime(), true)));
+    record(transport::kGameChannel, transport::to_msg(match.game(), match.utime(), true));
     transport::RunSummary summary;
     summary.frames = match.frame();
     summary.sim_s = static_cast<double>(match.utime()) * 1e-6;

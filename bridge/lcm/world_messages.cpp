@@ -58,11 +58,4 @@ match_event_t to_msg(const sim::MatchEvent& event) {
   return msg;
 }
 
-void TruthHash::add(const sim::TruthFrame& truth) {
-  const world_truth_t msg = to_msg(truth);
-  buffer_.resize(static_cast<size_t>(msg.getEncodedSize()));
-  msg.encode(buffer_.data(), 0, static_cast<int>(buffer_.size()));
-  add(buffer_.data(), buffer_.size());
-}
-
 } // namespace touchline::transport

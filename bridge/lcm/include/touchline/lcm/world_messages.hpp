@@ -33,15 +33,12 @@ std::vector<uint8_t> encoded(const Msg& msg) {
 /// whatever the match secret).
 class TruthHash {
  public:
-  /// One frame, from the encoding as published.
+  /// One frame, from the encoding as published (or, in process, as encoded()).
   void add(const uint8_t* encoded, size_t size) { hash_.add(encoded, size); }
-  /// One frame, encoded here (no bus: the in-process match).
-  void add(const sim::TruthFrame& truth);
   uint64_t value() const { return hash_.value(); }
 
  private:
   Fnv1a hash_;
-  std::vector<uint8_t> buffer_;
 };
 
 } // namespace touchline::transport
