@@ -60,15 +60,6 @@ void print_summary(const sim::Match& match, const transport::RunSummary& s) {
   if (s.resent_senses) std::cout << "  senses sent again to late robots: " << s.resent_senses << "\n";
 }
 
-/// --check's one line: how long the match is planned to last, for a launcher's progress bar.
-void print_plan(const sim::WorldConfig& config) {
-  const double duration_s = config.match.duration_s;
-  const double planned_s = std::min(duration_s, sim::planned_length_s(config.rules));
-  std::cout << std::setprecision(9) << "{\"planned_s\": " << planned_s
-            << ", \"goal_stoppage_s\": " << sim::goal_stoppage_s(config.rules) << ", \"duration_s\": " << duration_s
-            << ", \"team_size\": " << config.match.team_size << "}\n";
-}
-
 } // namespace
 
 int main(int argc, char** argv) {
@@ -146,7 +137,7 @@ int main(int argc, char** argv) {
     if (const auto problem = transport::lcm_url_problem(node.lcm_url))
       throw ConfigError("--lcm-url '" + node.lcm_url + "': cannot open LCM: " + *problem);
     if (vm.count("check")) {
-      print_plan(config);
+      std::cout << apps::match_plan_json(config) << "\n";
       return 0;
     }
   } catch (const po::error& e) {

@@ -1,5 +1,6 @@
 #include "touchline/apps/summary_json.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <stdexcept>
 
@@ -86,6 +87,17 @@ void write_summary_json(const std::string& path, const sim::Match& match, const 
   // written at the end of a whole match.
   out << summary.dump(2, ' ', false, json::error_handler_t::replace) << "\n";
   if (!out) throw std::runtime_error("cannot write summary to " + path);
+}
+
+std::string match_plan_json(const sim::WorldConfig& config) {
+  const double duration_s = config.match.duration_s;
+  const json plan = {{"planned_s", std::min(duration_s, sim::planned_length_s(config.rules))},
+                     {"goal_stoppage_s", sim::goal_stoppage_s(config.rules)},
+                     {"duration_s", duration_s},
+                     {"team_size", config.match.team_size},
+                     {"field_length_mm", config.field.length_mm},
+                     {"field_width_mm", config.field.width_mm}};
+  return plan.dump();
 }
 
 } // namespace touchline::apps

@@ -135,9 +135,7 @@ int main(int argc, char** argv) {
     if (vm.count("duration")) overrides.push_back("match.duration_s=" + format_number(duration_s));
     config = sim::load_world_config(config_path, overrides);
     if (vm.count("print-match")) {
-      std::cout << std::setprecision(9) << "{\"team_size\": " << config.match.team_size
-                << ", \"field_length_mm\": " << config.field.length_mm << ", \"field_width_mm\": "
-                << config.field.width_mm << ", \"duration_s\": " << config.match.duration_s << "}\n";
+      std::cout << apps::match_plan_json(config) << "\n";
       return 0;
     }
     if (args.size() < 2) throw po::error("no robots: give each one's options after a --");
