@@ -46,11 +46,27 @@ def experiment_result(team0: str, team1: str, rows: list[dict]) -> dict:
     matches = [{"seed": r["seed"], "score": [r["goals0"], r["goals1"]],
                 "penalties": json.loads(r["penalty_kinds"]), "falls": r["falls0"] + r["falls1"], "sim_s": r["sim_s"],
                 "possession_frames": [r["possession_frames0"], r["possession_frames1"]],
-                "stuck_s": [r["stuck_s0"], r["stuck_s1"]]} for r in played]
+                "stuck_s": [r["stuck_s0"], r["stuck_s1"]], "ball_moving_share": r["ball_moving_share"]}
+               for r in played]
     (cell,) = sweep_summary.summarise(played) if played else [{"goal_difference_mean": None,
                                                                "goal_difference_ci95": None}]
     return {"team0": team0, "team1": team1, "matches": matches,
-            "goal_difference_mean": cell["goal_difference_mean"], "goal_difference_ci95": cell["goal_difference_ci95"]}
+            "goal_difference_mean": cell["goal_difference_mean"], "goal_difference_ci95": cell["goal_difference_ci95"],
+            "per_match": per_match(matches)}
+
+
+def per_match(matches: list[dict]) -> dict:
+    """Issue #17's measures per match, for each team: pushing and illegal-defender penalties,
+    the most stuck seconds of any match (0: no robot was ever stuck more than 10 s) and the
+    mean share of the match the ball was in play and moving (None without logs)."""
+    n = max(1, len(matches))
+    penalties = sum((Counter(m["penalties"]) for m in matches), Counter())
+    moving = [m["ball_moving_share"] for m in matches if m["ball_moving_share"] != ""]
+    stuck = [[m["stuck_s"][t] for m in matches if m["stuck_s"][t] != ""] for t in (0, 1)]
+    return {"pushing": [penalties[f"{t}:pushing"] / n for t in (0, 1)],
+            "illegal_defender": [penalties[f"{t}:illegal defender"] / n for t in (0, 1)],
+            "stuck_s_max": [max(s) if s else None for s in stuck],
+            "ball_moving_share": sum(moving) / len(moving) if moving else None}
 
 
 def main() -> int:
@@ -118,6 +134,11 @@ def report(name: str, team0: str, team1: str, result: dict) -> None:
         print(f"  penalties team {team}: " + (", ".join(f"{k} {v}" for k, v in sorted(kinds.items())) or "none"))
     print(f"  falls: {sum(r['falls'] for r in rows)}; time stuck (>10 s spinning or at a wall): "
           f"team 0 {stuck[0]:.0f} s, team 1 {stuck[1]:.0f} s")
+    each = result["per_match"]
+    print(f"  per match: pushing {each['pushing'][0]:.1f} v {each['pushing'][1]:.1f}, illegal defender "
+          f"{each['illegal_defender'][0]:.1f} v {each['illegal_defender'][1]:.1f}"
+          + (f", ball in play and moving {100 * each['ball_moving_share']:.0f} % of the match"
+             if each["ball_moving_share"] is not None else ""))
 
 
 if __name__ == "__main__":

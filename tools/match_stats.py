@@ -7,6 +7,9 @@ TL_TRUTH (where every robot and the ball are); writes nothing.
   stuck:      a robot that in the last 10 s of play moved less than STUCK_MOVE_MM net while
               turning more than a full turn (spinning), or stayed near the carpet's edge
               (pressed against the boundary), is stuck for that sample.
+  ball moving: a sample in PLAYING whose ball is at least BALL_MOVING_MM from where it was
+              a second before; its share of all samples of the match (set-up states, half
+              time and stoppages count as not moving) is "ball_moving_share".
 """
 from __future__ import annotations
 
@@ -21,6 +24,8 @@ STUCK_MOVE_MM = 150                # net movement under this over the window...
 SPIN_RAD = 2 * math.pi             # ...while turning more than a full turn: spinning
 WALL_MARGIN_MM = 250               # ...or within this of the carpet's edge: against a wall
 POSSESSION_MM = 300                # the nearest robot this close to the ball has it
+BALL_MOVING_MM = 100               # the ball this far from where it was 1 s before is moving:
+                                   # a rolling ball or a dribble, not one wedged between feet
 
 
 def analyse_log(log: Path) -> dict:
@@ -37,6 +42,8 @@ def analyse_log(log: Path) -> dict:
     stuck_frames = Counter()
     edge_x = edge_y = None  # the carpet's edges, from TL_MATCH
     truth_frames = 0
+    ball_path = []  # the ball's last SAMPLES_PER_S + 1 samples
+    samples = moving_samples = 0
     for event in lcm.EventLog(str(log), "r"):
         if event.channel == "TL_MATCH" and edge_x is None:
             match = match_config_t.decode(event.data)
@@ -53,6 +60,9 @@ def analyse_log(log: Path) -> dict:
         if truth_frames % SAMPLE_EVERY:
             continue
         truth = world_truth_t.decode(event.data)
+        samples += 1
+        ball_path = [*ball_path[-SAMPLES_PER_S:], (truth.ball_x_mm, truth.ball_y_mm)]
+        moving_samples += playing and ball_moving(ball_path)
         nearest = None
         for r in truth.robots:
             counts = playing and r.active and not r.penalised and not r.fallen
@@ -68,7 +78,17 @@ def analyse_log(log: Path) -> dict:
         if nearest:
             possession[nearest[1]] += 1
     return {"possession_frames": [possession[0], possession[1]],
-            "stuck_s": [stuck_frames[0] / SAMPLES_PER_S, stuck_frames[1] / SAMPLES_PER_S]}
+            "stuck_s": [stuck_frames[0] / SAMPLES_PER_S, stuck_frames[1] / SAMPLES_PER_S],
+            "ball_moving_share": moving_samples / samples if samples else 0.0}
+
+
+def ball_moving(path: list) -> bool:
+    """Whether the ball whose last samples (x, y) end `path` has moved BALL_MOVING_MM in the
+    last second (SAMPLES_PER_S samples back; a shorter path has not)."""
+    if len(path) <= SAMPLES_PER_S:
+        return False
+    (x0, y0), (x1, y1) = path[-SAMPLES_PER_S - 1], path[-1]
+    return math.hypot(x1 - x0, y1 - y0) >= BALL_MOVING_MM
 
 
 def stuck(h: list, edge_x: float, edge_y: float) -> bool:

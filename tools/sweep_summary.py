@@ -19,7 +19,7 @@ from sweep_play import COLUMNS
 
 PLAYED = ("ok", "shim_died")  # statuses whose match has a score
 MEASURES = ["goals0", "goals1", "goal_difference", "penalties0", "penalties1", "possession0", "stuck_s0", "stuck_s1",
-            "rtf"]
+            "ball_moving_share", "rtf"]
 
 
 def ci95(values: list[float]) -> tuple[float, float] | None:

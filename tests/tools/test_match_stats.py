@@ -25,3 +25,19 @@ def test_standing_in_the_field_or_walking_is_not():
     assert not match_stats.stuck(samples(0, 0), EDGE_X, EDGE_Y)
     assert not match_stats.stuck(samples(3400, 0, dx=-2), EDGE_X, EDGE_Y)  # walks away from the wall
     assert not match_stats.stuck(samples(0, 0, theta_step=0.05), EDGE_X, EDGE_Y)  # 5 rad: less than a full turn
+
+
+def path(step_mm, samples=match_stats.SAMPLES_PER_S + 1):
+    return [(i * step_mm, 0.0) for i in range(samples)]
+
+
+def test_a_rolling_ball_is_moving():
+    assert match_stats.ball_moving(path(match_stats.BALL_MOVING_MM / match_stats.SAMPLES_PER_S))
+
+
+def test_a_wedged_or_new_ball_is_not_moving():
+    assert not match_stats.ball_moving(path(0))  # still
+    assert not match_stats.ball_moving(path(0.9 * match_stats.BALL_MOVING_MM / match_stats.SAMPLES_PER_S))
+    assert not match_stats.ball_moving(path(100, samples=match_stats.SAMPLES_PER_S))  # under a second seen
+    jitter = [(40.0 * (i % 2), 0.0) for i in range(match_stats.SAMPLES_PER_S + 1)]
+    assert not match_stats.ball_moving(jitter)  # back and forth between two feet goes nowhere
