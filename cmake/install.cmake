@@ -28,6 +28,14 @@ install(FILES ${PROJECT_SOURCE_DIR}/VERSION DESTINATION ${TOUCHLINE_SHARE_DIR} C
 install(TARGETS touchline_robot_api EXPORT TouchlineTargets COMPONENT development)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/robot_api/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
   COMPONENT development)
+# Our C++ skills and team (behaviour/registry.hpp: make_behaviour by name) for a team's own
+# library to build on: touchline::behaviour_cpp, a static library (position-independent, so
+# it links into a plugin). touchline_warnings goes along only as its link-time name.
+set_target_properties(touchline_warnings PROPERTIES EXPORT_NAME warnings)
+install(TARGETS touchline_behaviour_cpp touchline_warnings EXPORT TouchlineTargets
+  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT development)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/behaviour_cpp/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+  COMPONENT development)
 
 # The message types, for a team's own tools on the bus: the definitions, and lcm-gen's C++
 # (include/touchline/*_t.hpp, beside the robot API's folder) and Python.

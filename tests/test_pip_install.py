@@ -3,8 +3,9 @@ CMakeLists.txt), into a fresh venv, reusing this build folder (pip install --no-
 -C build-dir=BUILD: nothing is compiled twice). Then from another directory, with no PYTHONPATH
 and none of Touchline's variables: the console scripts answer --version, touchline-match plays a
 short 1 v 1 match in process that is the build tree's match (same seed, same truth hash), the
-installed programs default to the venv's share/touchline/ (not the source tree), and every
-Python package imports from the venv.
+installed programs default to the venv's share/touchline/ (not the source tree), every
+Python package imports from the venv, and a team's library built against the venv's CMake
+package on our C++ skills (touchline::behaviour_cpp) plays as the built-in ones do.
 
 The fresh venv takes its third-party packages (lcm, numpy, ..., and the build backend
 scikit-build-core) from the environment running this test, through a .pth file: no network
@@ -24,7 +25,25 @@ VERSION = (ROOT / "VERSION").read_text().strip()
 STEP_S = 600  # a wall-clock bound that only turns a hang into a failure
 PACKAGES = ("touchline", "touchline_tools", "touchline_viewer", "touchline_rl", "touchline_paths", "touchline_sim",
             "robot")
-MATCH = ["--team-size", "1", "--duration", "5", "--seed", "3", "--no-log", "--no-progress"]
+# Short READY and SET, so the match is mostly PLAYING.
+MATCH = ["--team-size", "1", "--duration", "10", "--seed", "3", "--no-log", "--no-progress", "--in-process",
+         "--set", "rules.ready_s=1", "--set", "rules.set_s=1"]
+CMAKE = os.environ.get("TOUCHLINE_CMAKE", "cmake")
+# A team's library of our skills: robot_shim --behaviour-plugin PATH --behaviour NAME makes NAME
+# with touchline::behaviour_cpp's registry, as --behaviour NAME does inside the programs.
+PLUGIN_CMAKE = """cmake_minimum_required(VERSION 3.22)
+project(our_skills LANGUAGES CXX)
+find_package(Touchline REQUIRED)
+touchline_add_behaviour_plugin(our_skills our_skills.cpp)
+target_link_libraries(our_skills PRIVATE touchline::behaviour_cpp)
+"""
+PLUGIN_CPP = """#include <touchline/behaviour/registry.hpp>
+#include <touchline/robot_api/plugin.hpp>
+std::unique_ptr<touchline::api::Behaviour> make(const touchline::api::PluginRequest& request) {
+  return touchline::behaviour::make_behaviour(request.name, request.params);
+}
+TOUCHLINE_BEHAVIOUR_PLUGIN(make)
+"""
 
 
 def run(args, **kw):
@@ -81,17 +100,42 @@ def test_every_console_script_answers_version(user):
 
 
 def test_the_installed_match_is_the_build_trees_match(user, venv, tmp_path):
-    result = user("touchline-match", "--in-process", *MATCH, "--json", "installed.json")
+    result = user("touchline-match", *MATCH, "--json", "installed.json")
     assert result.returncode == 0, result.stdout + result.stderr
     installed = json.loads((tmp_path / "installed.json").read_text())
     assert installed["mode"] == "in-process"
     assert [(r["team"], r["player"]) for r in installed["robots"]] == [(0, 1), (1, 1)]
-    assert installed["frames"] == 150 and all(r["frames_answered"] == 150 for r in installed["robots"])
+    assert installed["frames"] == 300 and all(r["frames_answered"] == 300 for r in installed["robots"])
     # The build tree's programs and launcher, the same match: the same truth, bit for bit.
-    result = run([sys.executable, ROOT / "tools" / "launch.py", "--build-dir", BUILD, "--in-process", *MATCH,
-                  "--json", tmp_path / "tree.json"])
+    assert installed["truth_hash"] == tree_match(tmp_path)["truth_hash"]
+
+
+def tree_match(tmp_path, *args):
+    """The summary of MATCH played by the build tree's launcher and programs."""
+    out = tmp_path / "tree.json"
+    result = run([sys.executable, ROOT / "tools" / "launch.py", "--build-dir", BUILD, *MATCH, *args, "--json", out])
     assert result.returncode == 0, result.stdout + result.stderr
-    assert installed["truth_hash"] == json.loads((tmp_path / "tree.json").read_text())["truth_hash"]
+    return json.loads(out.read_text())
+
+
+def test_a_teams_library_of_our_cpp_skills_plays_as_the_built_in_ones(user, venv, tmp_path):
+    source, build = tmp_path / "our_skills", tmp_path / "our_skills_build"
+    source.mkdir()
+    (source / "CMakeLists.txt").write_text(PLUGIN_CMAKE)
+    (source / "our_skills.cpp").write_text(PLUGIN_CPP)
+    # Only the venv: not this build tree's package or headers.
+    result = run([CMAKE, "-S", source, "-B", build, "-DCMAKE_BUILD_TYPE=Release", f"-DCMAKE_PREFIX_PATH={venv}",
+                  f"-DCMAKE_CXX_COMPILER={os.environ.get('TOUCHLINE_CXX', 'c++')}",
+                  "-DCMAKE_FIND_PACKAGE_NO_PACKAGE_REGISTRY=ON"])
+    assert result.returncode == 0, result.stdout + result.stderr
+    result = run([CMAKE, "--build", build])
+    assert result.returncode == 0, result.stdout + result.stderr
+    library = build / "libour_skills.so"
+    result = user("touchline-match", *MATCH, "--team0", f"plugin:{library}:Team", "--team1", "cpp:Team",
+                  "--json", "plugin.json")
+    assert result.returncode == 0, result.stdout + result.stderr
+    plugin = json.loads((tmp_path / "plugin.json").read_text())
+    assert plugin["truth_hash"] == tree_match(tmp_path, "--team0", "cpp:Team", "--team1", "cpp:Team")["truth_hash"]
 
 
 def test_the_installed_programs_play_from_the_venvs_files(user, venv):
