@@ -162,3 +162,16 @@ def test_every_package_imports_from_the_venv(user, venv):
     result = user(venv / "bin" / "python", "-c", "import touchline_paths; print(touchline_paths.PREFIX, "
                   "touchline_paths.behaviour_py(), touchline_paths.ROOT)")
     assert result.stdout.split() == [str(venv), str(venv / "share" / "touchline" / "behaviour_py"), "None"]
+
+
+def test_the_viewer_serves_and_learning_steps_from_the_venvs_files(user, venv):
+    result = user(venv / "bin" / "python", "-c", "from touchline_viewer import server; print(server.STATIC)")
+    assert result.returncode == 0, result.stderr
+    assert Path(result.stdout.strip()) == venv / "share" / "touchline" / "viewer" / "static"
+    assert (Path(result.stdout.strip()) / "index.html").is_file()
+    # The environment runs the installed touchline_sim and reads the installed behaviour_py's
+    # policy code (touchline_rl.robot_skills).
+    code = ("import gymnasium, touchline_rl; env = gymnasium.make('Touchline/GoToPose-v0'); env.reset(seed=1); "
+            "print(len(env.step(0)))")
+    result = user(venv / "bin" / "python", "-c", code)
+    assert (result.returncode, result.stdout.strip()) == (0, "5"), result.stderr
