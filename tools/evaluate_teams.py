@@ -22,9 +22,9 @@ from pathlib import Path
 import sweep
 import sweep_grid
 import sweep_summary
+import touchline_paths
 from touchline_version import add_version_option
 
-ROOT = Path(__file__).resolve().parents[1]
 EXPERIMENTS = {"supporters": ("py:Team", "py:Striker"), "ports": ("py:Team", "cpp:Team")}
 
 
@@ -74,11 +74,11 @@ def main() -> int:
     add_version_option(parser, "tools/evaluate_teams.py")
     parser.add_argument("--matches", type=int, default=20)
     parser.add_argument("--experiments", nargs="+", choices=sorted(EXPERIMENTS), default=sorted(EXPERIMENTS))
-    parser.add_argument("--build-dir", type=Path, default=ROOT / "build")
+    parser.add_argument("--build-dir", type=Path, default=touchline_paths.build_dir())
     parser.add_argument("--set", action="append", default=[], help="world config override for every match")
     parser.add_argument("--workers", type=int, default=sweep.CORES, help="matches at once (default: every core)")
     parser.add_argument("--out", type=Path, default=Path("team_results.json"))
-    parser.add_argument("--sweep-out", type=Path, default=ROOT / "out" / "evaluate_teams",
+    parser.add_argument("--sweep-out", type=Path, default=touchline_paths.work_dir("out") / "evaluate_teams",
                         help="the sweep's table, summary and plot (default out/evaluate_teams)")
     parser.add_argument("launch", nargs="*", help="after --: launcher options for every match (e.g. --in-process)")
     args = parser.parse_args()

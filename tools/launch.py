@@ -29,10 +29,11 @@ from match_checks import BadInput, check_python_skill, check_robot, check_world
 from match_processes import SECRET_ENV, Children
 from match_watch import MatchWatch
 from shim_keeper import ShimKeeper
+import touchline_paths
 from touchline_version import add_version_option
 
-ROOT = Path(__file__).resolve().parents[1]
-DEFAULT_BUILD = ROOT / "build"
+# The programs, config/ and behaviour_py/: the source tree's or the installed ones (touchline_paths.py).
+DEFAULT_BUILD = touchline_paths.build_dir()
 SHIMS_EXIT_S = 10  # wall seconds the shims may take to exit once the world has ended the match
 MATCH_CONFIG_WAIT_S = 10  # wall seconds sim_world may take to publish the match (TL_MATCH) once started
 
@@ -98,8 +99,8 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     for team in (0, 1):
         p.add_argument(f"--walk-engine{team}", choices=WALK_ENGINES, metavar="ENGINE",
                        help=f"team {team}'s walk engine, one of {', '.join(WALK_ENGINES)} (default: --walk-engine)")
-    p.add_argument("--config", type=Path, default=ROOT / "config" / "spl2011.ini", help="world config")
-    p.add_argument("--walk-config", type=Path, default=ROOT / "config" / "walk.ini", help="walk config")
+    p.add_argument("--config", type=Path, default=touchline_paths.config_file("spl2011.ini"), help="world config")
+    p.add_argument("--walk-config", type=Path, default=touchline_paths.config_file("walk.ini"), help="walk config")
     p.add_argument("--data-dir", type=Path, help="the robots' data directory (learned policies; default: "
                    "robot_shim's, the source tree's config/)")
     p.add_argument("--mode", choices=["lockstep", "realtime", "free"], default="lockstep")
@@ -125,7 +126,9 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     p.add_argument("--host-network", action="store_true",
                    help="use this machine's network instead of a private namespace (to watch in lcm-spy)")
     p.add_argument("--json", type=Path, help="also write the match summary here as JSON")
-    p.add_argument("--log-dir", type=Path, default=ROOT / "logs", help="where match logs go (default logs/)")
+    p.add_argument("--log-dir", type=Path, default=touchline_paths.work_dir("logs"),
+                   help="where match logs go (default logs/: the source tree's, or the current directory's "
+                        "when installed)")
     p.add_argument("--no-log", action="store_true", help="do not record an LCM event log")
     p.add_argument("--no-progress", action="store_true", help="no progress bar (it shows only on a terminal) "
                    "and no progress lines (every 10 %% of the match, when not on a terminal)")
@@ -254,7 +257,7 @@ def preflight(a: argparse.Namespace):
         behaviour = robot_behaviour(a, team, (0.0, 0.0, 0.0))
         if behaviour[:2] == ["--behaviour", "py"]:  # the skill is made when the robot first ticks: check it now
             skill = behaviour[behaviour.index("--param") + 1].partition("=")[2]
-            check_python_skill(what, skill, a.python_dir or ROOT / "behaviour_py")
+            check_python_skill(what, skill, a.python_dir or touchline_paths.behaviour_py())
         if checks_robots:
             check_robot(bin_shim, what, shim_command(a, bin_shim, team, 1, behaviour)[1:])
     return plan
@@ -306,8 +309,7 @@ class Launcher:
                 logger.error(f"launch: {b} not found; build first (tools/setup)")
                 return 2
         # The message types' Python: a build folder's, or an install prefix's (cmake --install).
-        sys.path[:0] = [str(a.build_dir / "lcm_types" / "gen" / "python"),
-                        str(a.build_dir / "share" / "touchline" / "lcm_types" / "python")]
+        sys.path[:0] = touchline_paths.lcm_python_dirs(a.build_dir)
         log = None
         if not a.no_log:
             stamp = datetime.datetime.now().strftime("%Y-%m-%d_%H%M%S")
@@ -571,7 +573,7 @@ def main(argv: list[str]) -> int:
         # exec, not a child: tools/netns execs the launcher again in the namespace, so this
         # process stays the launcher and a signal sent to it (or to tools/match, which execs
         # this) stops the match instead of orphaning it.
-        netns = ROOT / "tools" / "netns"
+        netns = Path(__file__).resolve().parent / "netns"  # beside this file, also when installed
         os.execv(netns, [str(netns), sys.executable, __file__, *argv])
     try:  # in the namespace: the checks open the match's bus as the programs will
         args.plan = preflight(args)

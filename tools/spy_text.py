@@ -30,9 +30,9 @@ from collections import deque
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+import touchline_paths  # noqa: E402
 from touchline_version import add_version_option  # noqa: E402
 
-ROOT = Path(__file__).resolve().parents[1]
 DEFAULT_URL = "udpm://239.255.76.67:7667?ttl=0"
 RATE_WINDOW_S = 2.0  # wall seconds a channel's rate is measured over
 TAG_BYTES = 32       # the authentication tag after every encoding (bridge/lcm bus.hpp)
@@ -44,7 +44,7 @@ GAME_STATES = {0: "INITIAL", 1: "READY", 2: "SET", 3: "PLAYING", 4: "FINISHED", 
 
 def load_types(build_dir: Path) -> dict:
     """LCM fingerprint (8 bytes) -> generated type, for every Touchline type there is."""
-    sys.path.insert(0, str(build_dir / "lcm_types" / "gen" / "python"))
+    sys.path[:0] = touchline_paths.lcm_python_dirs(build_dir)
     types = {}
     for name in TYPE_NAMES:
         try:
@@ -217,7 +217,8 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     p.add_argument("--text", action="store_true", help="(what tools/spy passes on: this view)")
     p.add_argument("--lcm-url", default=os.environ.get("TOUCHLINE_LCM_URL", DEFAULT_URL),
                    help=f"the bus to watch (default $TOUCHLINE_LCM_URL or {DEFAULT_URL})")
-    p.add_argument("--build-dir", type=Path, default=ROOT / "build", help="where the generated LCM types are")
+    p.add_argument("--build-dir", type=Path, default=touchline_paths.build_dir(),
+                   help="where the generated LCM types are")
     p.add_argument("--once", action="store_true", help="print one snapshot after --duration seconds and exit "
                    "(1 if nothing was heard)")
     p.add_argument("--duration", type=float, default=2.0, help="seconds to listen with --once (default 2)")

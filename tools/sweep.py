@@ -29,9 +29,11 @@ from pathlib import Path
 import sweep_grid
 import sweep_summary
 from sweep_grid import GridError, cell_label
+import touchline_paths
 from sweep_play import COLUMNS, play
+from touchline_version import add_version_option
 
-ROOT = Path(__file__).resolve().parents[1]
+HERE = Path(__file__).resolve().parent  # tools/, or the installed touchline_tools/
 EXIT_FAILED_MATCHES, EXIT_BAD_GRID = 1, 2
 CORES = len(os.sched_getaffinity(0))  # the cores this process may run on (a container's, not the host's)
 
@@ -39,8 +41,9 @@ CORES = len(os.sched_getaffinity(0))  # the cores this process may run on (a con
 def parse_args(argv: list[str]) -> tuple[argparse.Namespace, list[dict]]:
     """The options and the grid's matches; one line and exit 2 on a grid that cannot be played."""
     own, launch = (argv[:argv.index("--")], argv[argv.index("--") + 1:]) if "--" in argv else (argv, [])
-    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+    p = argparse.ArgumentParser(prog="tools/sweep", description=__doc__.split("\n\n")[0],
                                 usage="%(prog)s [options] [-- LAUNCHER OPTIONS...]")
+    add_version_option(p, "tools/sweep")
     p.add_argument("--grid", type=Path, help="a TOML grid file (its settings join the command line's)")
     p.add_argument("--team0", action="append", default=[], metavar="SPECS",
                    help="team 0's behaviours, a grid axis: py:Team or several, py:Team,cpp:Team (repeatable)")
@@ -61,7 +64,7 @@ def parse_args(argv: list[str]) -> tuple[argparse.Namespace, list[dict]]:
     p.add_argument("--out", type=Path, help="output folder (default out/sweep-DATE_TIME)")
     p.add_argument("--keep-logs", action="store_true", help="keep each match's LCM log in OUT/logs (with --ray: "
                    "on the machine that played it)")
-    p.add_argument("--build-dir", type=Path, default=ROOT / "build")
+    p.add_argument("--build-dir", type=Path, default=touchline_paths.build_dir())
     p.add_argument("--no-progress", action="store_true", help="no progress bar: a line per match")
     args = p.parse_args(own)
     if args.workers < 1:
@@ -84,7 +87,7 @@ def parse_args(argv: list[str]) -> tuple[argparse.Namespace, list[dict]]:
     except GridError as e:
         p.exit(EXIT_BAD_GRID, f"sweep: {e}\n")
     if args.out is None:
-        args.out = ROOT / "out" / f"sweep-{datetime.datetime.now():%Y-%m-%d_%H%M%S}"
+        args.out = touchline_paths.work_dir("out") / f"sweep-{datetime.datetime.now():%Y-%m-%d_%H%M%S}"
     return args, matches
 
 
@@ -176,8 +179,8 @@ def run_ray(matches: list[dict], address: str, workers: int, cpus_per_match: flo
     of the cluster needs this tree, built, at the same path. KeyboardInterrupt cancels every
     task (a cancelled task stops its launcher) and re-raises as run_local does."""
     import ray
-    # Ray workers import sweep_play (and what it imports) from this tree's tools/ folder.
-    paths = [str(ROOT / "tools"), str(build_dir / "lcm_types" / "gen" / "python"), os.environ.get("PYTHONPATH", "")]
+    # Ray workers import sweep_play (and what it imports) from this folder (tools/ or the installed package's).
+    paths = [str(HERE), *touchline_paths.lcm_python_dirs(build_dir), os.environ.get("PYTHONPATH", "")]
     runtime_env = {"env_vars": {"PYTHONPATH": os.pathsep.join(p for p in paths if p)}}
     options = {"runtime_env": runtime_env, "log_to_driver": False, "configure_logging": False}
     if address == "local":

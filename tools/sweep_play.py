@@ -21,9 +21,10 @@ from collections import Counter
 from pathlib import Path
 
 import match_stats
+import touchline_paths
 from sweep_grid import cell_label, launcher_args
 
-ROOT = Path(__file__).resolve().parents[1]
+LAUNCHER = Path(__file__).resolve().parent / "launch.py"  # beside this file, also when installed
 EXIT_SHIM_DIED = 3  # tools/launch.py: a robot_shim died, the match played to its end
 STOP_POLL_S = 0.2   # how often a running match checks whether the sweep is stopping
 
@@ -49,7 +50,7 @@ def play(match: dict, build_dir: Path, keep_logs: Path | None = None, stop: thre
     work = Path(tempfile.mkdtemp(prefix="touchline-sweep-"))
     try:
         summary_path = work / "summary.json"
-        command = [python, str(ROOT / "tools" / "launch.py"), "--build-dir", str(build_dir), "--json",
+        command = [python, str(LAUNCHER), "--build-dir", str(build_dir), "--json",
                    str(summary_path), "--log-dir", str(work), "--no-progress", *launcher_args(match)]
         launcher = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env,
                                     start_new_session=True)  # a terminal's Ctrl-C reaches the sweep, which stops it
@@ -68,9 +69,9 @@ def play(match: dict, build_dir: Path, keep_logs: Path | None = None, stop: thre
         row["status"] = "ok" if launcher.returncode == 0 else "shim_died"
         logs = sorted(work.glob("*.lcmlog"))
         if logs:
-            types = str(build_dir / "lcm_types" / "gen" / "python")  # the match's own message types
-            if types not in sys.path:
-                sys.path.insert(0, types)
+            for types in touchline_paths.lcm_python_dirs(build_dir):  # the match's own message types
+                if types not in sys.path:
+                    sys.path.insert(0, types)
             try:
                 row.update(from_log(match_stats.analyse_log(logs[0])))
             except Exception as e:  # noqa: BLE001 - a log we cannot read leaves those columns empty, says why

@@ -17,8 +17,10 @@ import math
 import sys
 from pathlib import Path
 
-sys.path.append(str(Path(__file__).resolve().parents[1] / "behaviour_py"))
-from touchline_version import add_version_option  # noqa: E402
+import touchline_paths
+from touchline_version import add_version_option
+
+sys.path.append(str(touchline_paths.behaviour_py()))
 from skills.tile_policy import policyText, wrapAngle as wrap  # noqa: E402 (the format's one writer, the one wrap)
 
 TILINGS = 4

@@ -1,15 +1,16 @@
-"""Every Python tool's --version ("tools/match 0.9.0"): the VERSION file at the source root,
-the one CMake's project() reads for the C++ programs too."""
+"""Every Python tool's --version ("tools/match 0.9.0"): the VERSION file at the source root (or
+its installed copy, touchline_paths.py), the one CMake's project() reads for the C++ programs too."""
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
 
-VERSION_FILE = Path(__file__).resolve().parents[1] / "VERSION"
+import touchline_paths
+
+VERSION_FILE = touchline_paths.SHARE / "VERSION"
 
 
 def version() -> str:
-    return VERSION_FILE.read_text().strip()
+    return touchline_paths.version()
 
 
 def add_version_option(parser: argparse.ArgumentParser, program: str) -> None:

@@ -5,6 +5,7 @@
 
 #include "touchline/apps/behaviour_factory.hpp"
 #include "touchline/apps/behaviour_plugin.hpp"
+#include "touchline/apps/install_dirs.hpp"
 #include "touchline/behaviour/registry.hpp"
 #include "touchline/cli.hpp"
 #include "touchline/ini.hpp"
@@ -41,7 +42,15 @@ std::string walk_engine_help() {
 
 } // namespace
 
-RobotOptions::RobotOptions() : data_dir(api::data_dir()) { def.behaviour.python_dir = TOUCHLINE_PYTHON_DIR; }
+RobotOptions::RobotOptions() : data_dir(api::data_dir()) {
+  def.behaviour.python_dir = TOUCHLINE_PYTHON_DIR;
+  // An installed program (cmake --install, pip install .) plays from its prefix's copies, not
+  // from the source tree it was built in, which may be gone.
+  if (const std::string share = installed_share_dir(); !share.empty()) {
+    def.behaviour.python_dir = share + "/behaviour_py";
+    data_dir = share + "/config";
+  }
+}
 
 void add_robot_options(po::options_description& options, RobotOptions& o) {
   robot::RobotDef& def = o.def;

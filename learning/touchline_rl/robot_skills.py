@@ -1,9 +1,10 @@
 """The robots' own Python skills that learning shares (behaviour_py/skills): the policy file's
 one reader and writer and the one angle wrap, so training and play agree bit for bit."""
-import pathlib
 import sys
 
-_BEHAVIOUR_PY = pathlib.Path(__file__).resolve().parents[2] / "behaviour_py"
+from touchline_rl.home import touchline_paths
+
+_BEHAVIOUR_PY = touchline_paths.behaviour_py()  # behaviour_py/, or its installed copy
 if str(_BEHAVIOUR_PY) not in sys.path:
     sys.path.append(str(_BEHAVIOUR_PY))
 

@@ -17,7 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from touchline_rl.multi_agent import MatchEnv
-from touchline_rl.native import REPO, touchline_sim
+from touchline_rl.native import touchline_sim
 
 
 def random_policy(agent, observation, rng):
@@ -58,8 +58,9 @@ def episode(seed, policy, env_kwargs=None):
 
 def runtime_env():
     """What a Ray worker needs to import touchline_rl and the touchline_sim extension as this
-    process does: PYTHONPATH naming learning/ and the extension's folder."""
-    paths = [str(REPO / "learning"), str(Path(touchline_sim.__file__).parent), os.environ.get("PYTHONPATH", "")]
+    process does: PYTHONPATH naming learning/ (or the installed package's folder) and the extension's folder."""
+    paths = [str(Path(__file__).resolve().parents[1]), str(Path(touchline_sim.__file__).parent),
+             os.environ.get("PYTHONPATH", "")]
     return {"env_vars": {"PYTHONPATH": os.pathsep.join(p for p in paths if p)}}
 
 

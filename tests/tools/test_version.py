@@ -20,6 +20,7 @@ PROGRAMS = [
     ("tools/match", [PY, str(ROOT / "tools" / "launch.py")]),
     ("tools/spy", [str(ROOT / "tools" / "spy")]),
     ("tools/spy", [PY, str(ROOT / "tools" / "spy_text.py")]),
+    ("tools/sweep", [PY, str(ROOT / "tools" / "sweep.py")]),
     ("tools/evaluate_teams.py", [PY, str(ROOT / "tools" / "evaluate_teams.py")]),
     ("tools/record_corpus.py", [PY, str(ROOT / "tools" / "record_corpus.py")]),
     ("tools/synthetic_policy.py", [PY, str(ROOT / "tools" / "synthetic_policy.py")]),

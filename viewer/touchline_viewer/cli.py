@@ -11,6 +11,7 @@ import sys
 from pathlib import Path
 
 from .errors import ViewerError, one_line
+from .home import touchline_paths
 
 DEFAULT_PORT = 8035
 PROG = "touchline_viewer"
@@ -39,7 +40,7 @@ def parse_args(argv) -> argparse.Namespace:
     source.add_argument("--log", type=Path, metavar="FILE", help="replay this lcm-logger log instead of watching live")
     source.add_argument("--lcm-url", metavar="URL", help="LCM URL to watch (default udpm://239.255.76.67:7667?ttl=0)")
     p.add_argument("--version", action="version", help="print the program's name and version and exit",
-                   version=f"{PROG} {(Path(__file__).resolve().parents[2] / 'VERSION').read_text().strip()}")
+                   version=f"{PROG} {touchline_paths.version()}")
     p.add_argument("--port", type=port_number, default=DEFAULT_PORT,
                    help=f"port on 127.0.0.1 (default {DEFAULT_PORT}; 0 picks a free one)")
     return p.parse_args(argv)

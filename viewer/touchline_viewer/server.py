@@ -8,12 +8,13 @@ from pathlib import Path
 from aiohttp import WSMsgType, web
 
 from .errors import ViewerError
+from .home import touchline_paths
 from .live import LiveSource
 from .replay import ReplaySession
 from .replay_log import ReplayLog
 
 HOST = "127.0.0.1"  # the viewer never listens on any other address
-STATIC = Path(__file__).resolve().parents[1] / "static"
+STATIC = touchline_paths.SHARE / "viewer" / "static"  # viewer/static, or its installed copy
 SOURCE = web.AppKey("source", object)  # a LiveSource or a ReplayLog
 
 
