@@ -1,14 +1,16 @@
 """Live view: subscribes to LCM and pushes the latest truth (with its frame's sonar), game
-state, robot statuses and match events to every connected page, at most ~30 times a second,
+state, robot statuses, match events and each robot's belief and role (its TL_ACT_<team>_<player>)
+to every connected page, at most ~30 times a second,
 once the match's geometry (TL_MATCH) is known; a new TL_MATCH (another match) is a new hello."""
 import asyncio
 from collections import deque
 
 import lcm
 
-from .decode import CHANNELS, EVENT, GAME, RECENT_EVENTS, SENSE, STATUS, TRUTH, decode
+from .decode import ACT_PATTERN, CHANNELS, EVENT, GAME, RECENT_EVENTS, SENSE, STATUS, TRUTH, decode
 from .errors import ViewerError
 from .field import MATCH
+from .replay_log import BELIEF_STALE_FRAMES, ROLE_STALE_FRAMES
 
 DEFAULT_LCM_URL = "udpm://239.255.76.67:7667?ttl=0"
 SEND_PERIOD_S = 1 / 30
@@ -25,7 +27,7 @@ class LiveSource:
         except (RuntimeError, OSError, ValueError) as e:
             hint = " (no multicast route? ip route add 224.0.0.0/4 dev lo)" if url.startswith("udpm") else ""
             raise ViewerError(f"cannot open LCM at {url}: {e}{hint}") from None
-        for channel in CHANNELS:
+        for channel in (*CHANNELS, ACT_PATTERN):
             self.lc.subscribe(channel, self._on_message)
         self.match = None  # the latest TL_MATCH: the page draws nothing before it
         self.truth = self.sense = None  # sense: the TL_SENSE of the truth's frame
@@ -33,6 +35,8 @@ class LiveSource:
         self._latest_sense = None
         self.statuses: dict = {}
         self.events: deque = deque(maxlen=RECENT_EVENTS)
+        self.beliefs: dict = {}  # (team, player) -> its latest act's belief
+        self.roles: dict = {}  # (team, player) -> (frame, role) of its latest team message naming one
         self.version = 0  # bumped by every decoded message
         self.clients: set = set()  # each has async hello(dict) and frame(dict)
         self._task = None
@@ -59,7 +63,18 @@ class LiveSource:
     def frame(self) -> dict:
         return {"truth": self.truth, "sense": self.sense, "game": self.game(),
                 "status": [self.statuses[k] for k in sorted(self.statuses)], "events": list(self.events),
-                "ack": None}
+                "beliefs": self.beliefs_now(), "ack": None}
+
+    def beliefs_now(self) -> list:
+        """The beliefs of the truth's frame, as the replay picks them (ReplayLog.beliefs_at)."""
+        frame, beliefs = self.truth["frame"], []
+        for key in sorted(self.beliefs):
+            belief = self.beliefs[key]
+            if 0 <= frame - belief["frame"] <= BELIEF_STALE_FRAMES:
+                role_frame, role = self.roles.get(key, (None, None))
+                fresh = role_frame is not None and 0 <= frame - role_frame <= ROLE_STALE_FRAMES
+                beliefs.append({**belief, "role": role if fresh else None})
+        return beliefs
 
     def _on_message(self, channel: str, data: bytes) -> None:
         message = decode(channel, data)  # handlers never throw: a bad message is dropped
@@ -83,6 +98,11 @@ class LiveSource:
             self.games.append(message)
         elif channel == STATUS:
             self.statuses[(message["team"], message["player"])] = message
+        elif channel.startswith("TL_ACT_"):
+            key = (message["team"], message["player"])
+            self.beliefs[key] = message
+            if message["role"] is not None:
+                self.roles[key] = (message["frame"], message["role"])
         self.version += 1
 
     async def _broadcast(self) -> None:
