@@ -18,7 +18,7 @@ from known_log import COVARIANCES, FALL_US, FRAMES, GOAL_US, ROBOTS, ROLES, beli
 from test_replay_page import (TEAM_RGB, assert_drawn_at, colour_near, drawn, expected_pixel, open_viewer, screenshot,
                               wait_for_frame)
 
-CARPET_RGB = (0x2E, 0x7D, 0x32)
+BELIEF_RGB = {0: (0x8F, 0xB0, 0xFF), 1: (0xFF, 0x9A, 0x9D)}  # light tints of the team colours
 MARKER_RGB = {"penalty": (0xFF, 0xD2, 0x1F), "fall": (0xFF, 0x4F, 0xD8)}
 SIGMAS = 2  # the ellipse's half-axes: two standard deviations
 REFERENCE = ROOT / "tests" / "viewer" / "reference" / "known_frame6.png"
@@ -55,6 +55,14 @@ def ellipse_inside_point(state: dict, belief: dict, along: float) -> tuple:
     return pose["px"] + r * math.cos(e["angle_rad"]), pose["py"] - r * math.sin(e["angle_rad"])
 
 
+def ring_pixels_in(image: Image.Image, belief: dict) -> int:
+    """How many of 24 points round the believed pose's ring have the belief's colour."""
+    pose, rgb = belief["pose"], BELIEF_RGB[belief["team"]]
+    points = [(pose["px"] + pose["ring_px"] * math.cos(a), pose["py"] - pose["ring_px"] * math.sin(a))
+              for a in (k * math.pi / 12 for k in range(24))]
+    return sum(colour_near(image, x, y, rgb, tolerance=40)[0] for x, y in points)
+
+
 def test_each_belief_is_drawn_where_the_act_says_with_its_ellipse(page, replay_server):
     state = open_viewer(page, replay_server.url)
     assert state["show_beliefs"] is True
@@ -63,7 +71,7 @@ def test_each_belief_is_drawn_where_the_act_says_with_its_ellipse(page, replay_s
     scale = state["scale_px_per_mm"]
     for key, b in beliefs.items():
         want = belief_at(*key, 0)
-        assert b["colour"].upper() == "#%02X%02X%02X" % TEAM_RGB[key[0]]
+        assert b["colour"].upper() == "#%02X%02X%02X" % BELIEF_RGB[key[0]]
         assert_drawn_at(state, b["pose"], want["pose"])
         assert_drawn_at(state, b["ball"], want["ball"])
         xx, xy, yy = want["cov"]
@@ -82,11 +90,15 @@ def test_the_toggle_hides_and_shows_the_beliefs(page, replay_server):
     state = open_viewer(page, replay_server.url)
     goalie = next(b for b in state["beliefs"] if (b["team"], b["player"]) == (0, 1))
     inside = tuple(map(round, ellipse_inside_point(state, goalie, 0.8)))  # clear of the ring and the robot
-    shown = screenshot(page).getpixel(inside)[:3]
+    image = screenshot(page)
+    shown = image.getpixel(inside)[:3]
+    assert ring_pixels_in(image, goalie) >= 3, "the dashed ring of the believed pose, in the belief colour"
     page.locator("#beliefs").click()
     hidden_state = drawn(page)
     assert hidden_state["show_beliefs"] is False and hidden_state["beliefs"] == []
-    hidden = screenshot(page).getpixel(inside)[:3]
+    image = screenshot(page)
+    hidden = image.getpixel(inside)[:3]
+    assert ring_pixels_in(image, goalie) == 0, "no ring with the beliefs hidden"
     assert shown[2] > hidden[2] + 15, f"the ellipse tints what is under it with team 0's blue ({shown} over {hidden})"
     page.keyboard.press("b")
     assert drawn(page)["show_beliefs"] is True, "the b key shows them again"

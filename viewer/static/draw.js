@@ -273,7 +273,9 @@ function drawBadges(ctx, v, r) { // right of the number
 // What each robot believes (its act_t): its pose as a dashed ring with a heading tick, the
 // uncertainty ellipse of its position (BELIEF_SIGMAS standard deviations along the covariance's
 // axes), a faint line from where it truly is, and the ball it believes as a dashed ring; all in
-// its team colour. A ball it has not seen for a while fades; one it never saw is not drawn.
+// a light tint of its team colour (BELIEF_COLOURS), apart from the truth's saturated feet. A
+// ball it has not seen for a while fades; one it never saw is not drawn.
+export const BELIEF_COLOURS = ["#8fb0ff", "#ff9a9d"];
 export const BELIEF_SIGMAS = 2;
 export const BELIEF_RING_MM = 120;
 const NEVER_SEEN_FRAMES = 1 << 20;
@@ -288,7 +290,7 @@ export function covarianceEllipse(cov) {
 }
 
 function drawBelief(ctx, v, match, b, truth) {
-  const colour = TEAM_COLOURS[b.team] || INACTIVE_COLOUR, out = { team: b.team, player: b.player, colour };
+  const colour = BELIEF_COLOURS[b.team] || INACTIVE_COLOUR, out = { team: b.team, player: b.player, colour };
   ctx.save();
   ctx.strokeStyle = ctx.fillStyle = colour;
   ctx.lineWidth = 2;
