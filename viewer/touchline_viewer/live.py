@@ -14,6 +14,7 @@ from .replay_log import BELIEF_STALE_FRAMES, ROLE_STALE_FRAMES
 
 DEFAULT_LCM_URL = "udpm://239.255.76.67:7667?ttl=0"
 SEND_PERIOD_S = 1 / 30
+RECENT_ACTS = 8  # acts (and roles) kept per robot to pick the truth's own frame's
 RECENT_GAMES = 8  # game states kept to pick the one current at the truth's time (they come at 1 Hz)
 
 
@@ -35,8 +36,10 @@ class LiveSource:
         self._latest_sense = None
         self.statuses: dict = {}
         self.events: deque = deque(maxlen=RECENT_EVENTS)
-        self.beliefs: dict = {}  # (team, player) -> its latest act's belief
-        self.roles: dict = {}  # (team, player) -> (frame, role) of its latest team message naming one
+        # The acts of frame k + 1 come right after the truth of frame k: a few are kept per robot
+        # so that the truth drawn gets the act of its own frame, as in the replay.
+        self.beliefs: dict = {}  # (team, player) -> deque of its latest acts' beliefs
+        self.roles: dict = {}  # (team, player) -> deque of (frame, role) of its latest team messages naming one
         self.version = 0  # bumped by every decoded message
         self.clients: set = set()  # each has async hello(dict) and frame(dict)
         self._task = None
@@ -69,11 +72,10 @@ class LiveSource:
         """The beliefs of the truth's frame, as the replay picks them (ReplayLog.beliefs_at)."""
         frame, beliefs = self.truth["frame"], []
         for key in sorted(self.beliefs):
-            belief = self.beliefs[key]
-            if 0 <= frame - belief["frame"] <= BELIEF_STALE_FRAMES:
-                role_frame, role = self.roles.get(key, (None, None))
-                fresh = role_frame is not None and 0 <= frame - role_frame <= ROLE_STALE_FRAMES
-                beliefs.append({**belief, "role": role if fresh else None})
+            belief = next((b for b in reversed(self.beliefs[key]) if b["frame"] <= frame), None)
+            if belief is not None and frame - belief["frame"] <= BELIEF_STALE_FRAMES:
+                role = next((r for f, r in reversed(self.roles.get(key, ())) if 0 <= frame - f <= ROLE_STALE_FRAMES), None)
+                beliefs.append({**belief, "role": role})
         return beliefs
 
     def _on_message(self, channel: str, data: bytes) -> None:
@@ -100,9 +102,9 @@ class LiveSource:
             self.statuses[(message["team"], message["player"])] = message
         elif channel.startswith("TL_ACT_"):
             key = (message["team"], message["player"])
-            self.beliefs[key] = message
+            self.beliefs.setdefault(key, deque(maxlen=RECENT_ACTS)).append(message)
             if message["role"] is not None:
-                self.roles[key] = (message["frame"], message["role"])
+                self.roles.setdefault(key, deque(maxlen=RECENT_ACTS)).append((message["frame"], message["role"]))
         self.version += 1
 
     async def _broadcast(self) -> None:
