@@ -80,6 +80,8 @@ def main() -> int:
     p.add_argument("--baseline", action="store_true", help="also time decoding every message up front (slow)")
     p.add_argument("--json", type=Path)
     args = p.parse_args()
+    if args.repeat < 1:
+        p.error("--repeat must be at least 1")
     if not args.log.is_file():
         print(f"viewer_open: no log {args.log}", file=sys.stderr)
         return 2
