@@ -1,5 +1,6 @@
 #include "touchline/lcm/codec.hpp"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -235,6 +236,10 @@ act_t to_lcm(const RobotAct& act, int64_t utime, int64_t instance) {
   m.leds = act.leds;
   m.behaviour_cpu_us = static_cast<int32_t>(act.behaviour_cpu_us);
   m.localised = to_lcm(act.localised);
+  std::copy(act.localised_cov_mm2.begin(), act.localised_cov_mm2.end(), m.localised_cov_mm2);
+  m.ball_x_mm = act.ball_x_mm;
+  m.ball_y_mm = act.ball_y_mm;
+  m.ball_lost_frames = act.ball_lost_frames;
   m.team_message_size = static_cast<int16_t>(act.team_message.size());
   m.team_message = act.team_message;
   return m;
@@ -262,6 +267,11 @@ RobotAct from_lcm(const act_t& m) {
   act.leds = m.leds;
   act.behaviour_cpu_us = m.behaviour_cpu_us;
   act.localised = from_lcm(m.localised, "localised", what);
+  // The belief is the viewer's: passed on unchecked (a diverged filter's NaN is its business).
+  std::copy(std::begin(m.localised_cov_mm2), std::end(m.localised_cov_mm2), act.localised_cov_mm2.begin());
+  act.ball_x_mm = m.ball_x_mm;
+  act.ball_y_mm = m.ball_y_mm;
+  act.ball_lost_frames = m.ball_lost_frames;
   act.team_message = m.team_message;
   return act;
 }

@@ -76,6 +76,13 @@ RobotAct Robot::step(const SenseFrame& frame, const RobotSense& sense) {
   act.behaviour_cpu_us = stats_.ticked_last_step ? stats_.last_cpu_us : 0;
   const api::AbsCoord& believed = blackboard_.localisation.robotPos;
   act.localised = to_world_frame({believed.x, believed.y, believed.theta}, def_.id.team);
+  const auto& cov = blackboard_.localisation.robotPosCovariance; // row-major (x, y, theta)
+  act.localised_cov_mm2 = {cov[0], cov[1], cov[4]};
+  const api::AbsCoord& ball = blackboard_.localisation.ballPos;
+  const Pose2D ball_world = to_world_frame({ball.x, ball.y, 0}, def_.id.team);
+  act.ball_x_mm = ball_world.x_mm;
+  act.ball_y_mm = ball_world.y_mm;
+  act.ball_lost_frames = blackboard_.localisation.ballLostCount;
   const auto& message = blackboard_.behaviour.request.teamMessage;
   if (stats_.ticked_last_step && message.size() <= kMaxTeamMessageBytes) act.team_message = message;
   return act;

@@ -109,6 +109,24 @@ TEST(Robot, TeamOneSeesTheFieldFromItsOwnSide) {
   EXPECT_NEAR(std::fabs(act.localised.theta_rad), kPi, 1e-6);
 }
 
+TEST(Robot, TheBeliefGoesToTheWorldInItsFrameWithTheCovariance) {
+  // The viewer draws act_t's belief: the pose's position covariance and the ball, field frame.
+  robot::Robot robot(robot_def({1, 2}), std::make_unique<Probe>()); // its own filters, not the truth
+  RobotSense sense;
+  sense.id = {1, 2};
+  sense.truth = {1000, 300, kPi};
+  const SenseFrame frame = frame_with(sense, 0);
+  const RobotAct act = robot.step(frame, frame.robots[0]);
+  const api::LocalisationBlackboard& loc = robot.blackboard().localisation; // team 1's frame
+  EXPECT_GT(act.localised_cov_mm2[0], 0.f) << "a filter's pose has an uncertainty";
+  EXPECT_FLOAT_EQ(act.localised_cov_mm2[0], loc.robotPosCovariance[0]);
+  EXPECT_FLOAT_EQ(act.localised_cov_mm2[1], loc.robotPosCovariance[1]); // a half turn keeps xy
+  EXPECT_FLOAT_EQ(act.localised_cov_mm2[2], loc.robotPosCovariance[4]);
+  EXPECT_FLOAT_EQ(act.ball_x_mm, -loc.ballPos.x);
+  EXPECT_FLOAT_EQ(act.ball_y_mm, -loc.ballPos.y);
+  EXPECT_EQ(act.ball_lost_frames, loc.ballLostCount);
+}
+
 TEST(Robot, ReceiverKeepsTheLatestMessageOfEachTeammate) {
   robot::Robot robot(robot_def({0, 1}), std::make_unique<Probe>());
   RobotSense sense;

@@ -40,7 +40,22 @@ MATCH = {"field_length_mm": 7000.0, "field_width_mm": 4500.0, "border_mm": 600.0
          "sonar_range_mm": 900.0, "sonar_half_width_mm": 100.0}
 SEED, TEAM_SIZE = 17, 4
 # match_event_t: (utime, kind, team, player, text); the page shows them as (kind name, text)
-EVENTS = [(0, 0, -1, 0, "PLAYING"), (0, 2, 1, 4, "pushing"), (FALL_US, 4, 0, 2, "fell")]
+GOAL_US = 9 * FRAME_US + 2000  # during frame 9
+EVENTS = [(0, 0, -1, 0, "PLAYING"), (0, 2, 1, 4, "pushing"), (FALL_US, 4, 0, 2, "fell"), (GOAL_US, 1, 0, 2, "goal")]
+
+# Each robot's belief in its act_t (TL_ACT_<team>_<player>): its pose off the truth by
+# BELIEF_OFFSET_MM, the position covariance [xx, xy, yy] (mm^2), the ball off the truth by
+# BALL_BELIEF_OFFSET_MM, and the role its team message names (our Team's 10-byte format, sent
+# every ROLE_EVERY_FRAMES frames from frame 0). The inactive robot sends nothing; the penalised
+# one sends a message of another format: it has a belief but no role.
+BELIEF_OFFSET_MM = (150.0, -100.0)
+BALL_BELIEF_OFFSET_MM = (100.0, 80.0)
+COVARIANCES = {(0, 1): (40000.0, 0.0, 10000.0), (0, 2): (22500.0, 0.0, 22500.0), (1, 1): (30000.0, 15000.0, 30000.0),
+               (1, 2): (2500.0, 0.0, 90000.0), (1, 3): (0.0, 0.0, 0.0), (1, 4): (10000.0, 0.0, 10000.0)}
+ROLES = {(0, 1): "goalie", (0, 2): "striker", (1, 1): "goalie", (1, 2): "defender", (1, 3): "midfielder"}
+ROLE_CODES = {"goalie": 1, "striker": 2, "defender": 3, "midfielder": 4}
+ROLE_EVERY_FRAMES = 6
+BALL_LOST_FRAMES = {(1, 2): 60}  # the rest saw it this frame
 
 
 def ball_at(k: int) -> tuple:
@@ -121,6 +136,41 @@ def match_config(**changes):
     return m
 
 
+def belief_at(team: int, player: int, k: int) -> dict:
+    """What robot (team, player) believes in frame k, as its act_t says it (None: no act)."""
+    if (team, player) not in COVARIANCES:
+        return None
+    spec = next(s for s in ROBOTS if s[:2] == (team, player))
+    x, y, th = robot_at(spec, k)["body"]
+    bx, by = ball_at(k)
+    return {"pose": (x + BELIEF_OFFSET_MM[0], y + BELIEF_OFFSET_MM[1], th), "cov": COVARIANCES[(team, player)],
+            "ball": (bx + BALL_BELIEF_OFFSET_MM[0], by + BALL_BELIEF_OFFSET_MM[1]),
+            "ball_lost": BALL_LOST_FRAMES.get((team, player), 0), "role": ROLES.get((team, player))}
+
+
+def team_message(team: int, player: int, k: int) -> bytes:
+    if k % ROLE_EVERY_FRAMES:
+        return b""
+    role = ROLES.get((team, player))
+    if role is None:
+        return b"\x07\x07\x07\x07"  # another behaviour's message: no role in it
+    return bytes([1, player, ROLE_CODES[role], 1, 0x10, 0x01, 0, 0, 0, 0])
+
+
+def _act(k: int, team: int, player: int):
+    """Robot (team, player)'s answer to frame k, sent before the frame's truth."""
+    b, m = belief_at(team, player, k), touchline.act_t()
+    m.utime, m.frame, m.team, m.player, m.instance, m.motion_ticks = utime_of(k - 1), k, team, player, 7, 0
+    m.left, m.right = [], []
+    m.localised = _pose(b["pose"])
+    m.localised_cov_mm2 = list(b["cov"])
+    m.ball_x_mm, m.ball_y_mm = b["ball"]
+    m.ball_lost_frames = b["ball_lost"]
+    m.team_message = team_message(team, player, k)
+    m.team_message_size = len(m.team_message)
+    return m
+
+
 def _event(utime: int, kind: int, team: int, player: int, text: str):
     m = touchline.match_event_t()
     m.utime, m.kind, m.team, m.player, m.text = utime, kind, team, player, text
@@ -149,6 +199,7 @@ def known_messages() -> list:
     events += [(e[0], "TL_EVENT", _event(*e)) for e in EVENTS]
     for k in range(FRAMES):
         events += [(utime_of(k - 1), "TL_SENSE", _sense(k))] if k in SENSE_FRAMES else []
+        events += [(utime_of(k - 1), f"TL_ACT_{t}_{p}", _act(k, t, p)) for t, p in sorted(COVARIANCES)]
         events.append((utime_of(k), "TL_TRUTH", _truth(k)))
     events.append((utime_of(FRAMES // 2), "TL_GAME", _game(utime_of(FRAMES // 2), 599)))
     events.append((utime_of(FRAMES // 2), "TL_MATCH", match_config()))  # the world repeats it

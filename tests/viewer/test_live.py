@@ -1,5 +1,6 @@
 """The live view: the match's geometry (TL_MATCH) first, then LCM messages decoded and pushed
-to the page, decimated to ~30 a second, each truth with its own frame's sonar; a log played
+to the page, decimated to ~30 a second, each truth with its own frame's sonar and the robots'
+beliefs and roles from their acts; a log played
 into it with lcm-logplayer shows what the replay of that log shows."""
 import asyncio
 import json
@@ -57,8 +58,9 @@ def test_another_match_on_the_bus_is_a_new_hello():
 def test_published_truth_reaches_the_page_as_the_replay_decodes_it(known_log):
     _, frames = asyncio.run(watch_memq(publish_all=False))
     replayed = ReplayLog.load(known_log).frame(0)
-    for part in ("truth", "sense", "game", "status", "events"):
+    for part in ("truth", "sense", "game", "status", "events", "beliefs"):
         assert frames[-1][part] == replayed[part], part
+    assert [b["role"] for b in frames[-1]["beliefs"]] == ["goalie", "striker", "goalie", "defender", "midfielder", None]
     assert frames[-1]["sense"]["frame"] == 0
 
 
@@ -68,6 +70,8 @@ def test_a_burst_is_decimated_to_the_latest_frame(known_log):
     assert frames[-1]["truth"]["frame"] == FRAMES - 1
     assert FRAMES - 1 not in SENSE_FRAMES and frames[-1]["sense"] is None, "never the previous frame's sonar"
     assert frames[-1]["events"] == ReplayLog.load(known_log).frame(FRAMES - 1)["events"]
+    assert frames[-1]["beliefs"] == ReplayLog.load(known_log).frame(FRAMES - 1)["beliefs"], \
+        "each robot's latest act, with the role of its last team message"
 
 
 def test_a_log_played_with_lcm_logplayer_shows_what_its_replay_shows(known_log):
@@ -82,4 +86,5 @@ def test_a_log_played_with_lcm_logplayer_shows_what_its_replay_shows(known_log):
         replayed = replay.frame(live["truth"]["frame"])
         assert live["truth"] == replayed["truth"]
         assert live["sense"] == replayed["sense"]
+        assert live["beliefs"] == replayed["beliefs"], "TL_ACT_* live: the beliefs and roles the replay shows"
         assert live["game"]["secs_remaining"] == replayed["game"]["secs_remaining"]

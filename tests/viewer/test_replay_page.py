@@ -125,8 +125,14 @@ def test_ball_and_feet_pixels_have_their_colours(page, replay_server):
     assert ok, f"ball pixel is {found}"
     for robot in state["robots"]:
         rgb = (PENALISED_RGB if robot["penalised"] else TEAM_RGB)[robot["team"]] if robot["active"] else INACTIVE_RGB
+        body = robot["body"]
         for foot in ("left", "right"):
-            ok, found = colour_near(image, robot[foot]["px"], robot[foot]["py"], rgb)
+            # the foot's outer half, 20 mm out from its centre: the chest LED's disc on the body
+            # centre may reach the centre of a foot at this scale
+            f = robot[foot]
+            out = 20 / math.hypot(f["x"] - body["x"], f["y"] - body["y"])
+            x, y = f["x"] + (f["x"] - body["x"]) * out, f["y"] + (f["y"] - body["y"]) * out
+            ok, found = colour_near(image, *expected_pixel(state, x, y), rgb)
             assert ok, f"team {robot['team']} player {robot['player']} {foot} foot pixel is {found}, not {rgb}"
 
 

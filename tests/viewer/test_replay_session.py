@@ -1,10 +1,13 @@
 """ReplayLog and ReplaySession without a browser: time lookup, the frame's game state,
-statuses, sonar and match events, and the play, pause, step, seek and speed commands on a fake clock."""
+statuses, sonar, match events and each robot's belief and role, the timeline in the hello, and
+the play, pause, step, seek and speed commands on a fake clock."""
 import asyncio
 
+import lcm
 import pytest
 
-from known_log import EVENTS, FRAMES, ROBOTS, SENSE_FRAMES, sonar_at, utime_of
+from known_log import (COVARIANCES, EVENTS, FALL_US, FRAMES, GOAL_US, ROBOTS, ROLE_EVERY_FRAMES, ROLES, SENSE_FRAMES,
+                       belief_at, known_messages, sonar_at, utime_of)
 from touchline_viewer.replay import ReplaySession
 from touchline_viewer.replay_log import ReplayLog
 
@@ -50,10 +53,64 @@ def test_a_frame_carries_the_sonar_of_its_own_sense_frame(log):
 
 
 def test_a_frame_carries_the_latest_match_events_up_to_it(log):
-    kinds = {0: "STATE_CHANGE", 2: "PENALTY", 4: "FALL"}
+    kinds = {0: "STATE_CHANGE", 1: "GOAL", 2: "PENALTY", 4: "FALL"}
     assert log.frame(FRAMES - 1)["events"] == [{"utime": u, "kind": kinds[kind], "team": team, "player": player,
                                                 "text": text} for u, kind, team, player, text in EVENTS]
     assert [e["text"] for e in log.frame(5)["events"]] == ["PLAYING", "pushing"], "the fall comes in frame 6"
+
+
+def test_a_frame_carries_each_robot_s_belief_from_its_act(log):
+    for k in (0, 4, FRAMES - 1):
+        beliefs = log.frame(k)["beliefs"]
+        assert [(b["team"], b["player"]) for b in beliefs] == sorted(COVARIANCES), "robots without acts: none"
+        for b in beliefs:
+            want = belief_at(b["team"], b["player"], k)
+            assert b["frame"] == k
+            assert b["pose"] == pytest.approx(list(want["pose"]), abs=0.06)
+            assert b["cov"] == list(want["cov"]) and b["ball"] == pytest.approx(list(want["ball"]), abs=0.06)
+            assert b["ball_lost"] == want["ball_lost"]
+
+
+def test_a_role_lasts_from_one_team_message_to_the_next(log):
+    """Messages come every ROLE_EVERY_FRAMES frames; the frames between show the last one's role."""
+    for k in range(FRAMES):
+        roles = {(b["team"], b["player"]): b["role"] for b in log.frame(k)["beliefs"]}
+        assert roles == {key: ROLES.get(key) for key in COVARIANCES}, f"frame {k}"
+    assert ROLE_EVERY_FRAMES > 1
+
+
+def test_a_role_is_forgotten_when_its_message_is_stale(tmp_path):
+    """Acts every 10 frames, only the first with a team message: its role lasts 60 frames (2 s)."""
+    path = tmp_path / "stale.lcmlog"
+    writer = lcm.EventLog(str(path), "w", overwrite=True)
+    for utime, channel, message in known_messages():
+        if channel.startswith("TL_ACT_"):
+            message.frame *= 10
+            if message.frame > 0:
+                message.team_message, message.team_message_size = b"", 0
+        writer.write_event(utime, channel, message.encode())
+    writer.close()
+    stale = ReplayLog.load(path)
+    assert {b["role"] for b in stale.beliefs_at(60)} == {"goalie", "striker", "defender", "midfielder", None}
+    assert {b["role"] for b in stale.beliefs_at(70)} == {None}, "a message older than 2 s names no role"
+    assert len(stale.beliefs_at(140)) == len(COVARIANCES), "the act of frame 110 is 30 frames old: still believed"
+    assert stale.beliefs_at(141) == [], "an act older than 1 s is no belief"
+
+
+def test_the_hello_carries_the_timeline(log):
+    marks = ReplaySession(log, send=None).hello()["timeline"]
+    assert [(m["kind"], m["t"]) for m in marks] == [("state", 0), ("penalty", 0), ("fall", FALL_US / 1e6),
+                                                    ("goal", GOAL_US / 1e6)]
+
+
+def test_seek_after_shows_the_first_frame_at_or_after(log):
+    session = ReplaySession(log, send=None, clock=FakeClock())
+    session.apply({"cmd": "seek", "t": FALL_US / 1e6})
+    assert session.index == 5, "the last frame at or before the fall"
+    session.apply({"cmd": "seek", "t": FALL_US / 1e6, "after": True})
+    assert session.index == 6, "a marker shows its effect: the first frame after it"
+    session.apply({"cmd": "seek", "t": 1e6, "after": True})
+    assert session.index == FRAMES - 1
 
 
 def test_step_seek_and_speed(log):

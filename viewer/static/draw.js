@@ -171,6 +171,24 @@ function drawLed(ctx, v, foot, r) {
 }
 
 const labelY = (v, r) => v.py(r.body[1]) - Math.max(16, 170 * v.s);
+const roleY = (v, r) => v.py(r.body[1]) + Math.max(16, 170 * v.s);
+
+// The role the robot's behaviour plays (from its team message, see decode.py), under its feet.
+function drawRole(ctx, v, r, role) {
+  if (!role) return null;
+  const x = v.px(r.body[0]), y = roleY(v, r);
+  ctx.save();
+  ctx.font = "bold 10px 'DejaVu Sans', sans-serif";
+  ctx.textAlign = "center";
+  ctx.textBaseline = "middle";
+  ctx.lineWidth = 3;
+  ctx.strokeStyle = "#000";
+  ctx.strokeText(role, x, y);
+  ctx.fillStyle = "#fff";
+  ctx.fillText(role, x, y);
+  ctx.restore();
+  return { text: role, px: round1(x), py: round1(y) };
+}
 
 function drawNumber(ctx, v, r) {
   const x = v.px(r.body[0]), y = labelY(v, r);
@@ -252,6 +270,82 @@ function drawBadges(ctx, v, r) { // right of the number
   });
 }
 
+// What each robot believes (its act_t): its pose as a dashed ring with a heading tick, the
+// uncertainty ellipse of its position (BELIEF_SIGMAS standard deviations along the covariance's
+// axes), a faint line from where it truly is, and the ball it believes as a dashed ring; all in
+// a light tint of its team colour (BELIEF_COLOURS), apart from the truth's saturated feet. A
+// ball it has not seen for a while fades; one it never saw is not drawn.
+export const BELIEF_COLOURS = ["#8fb0ff", "#ff9a9d"];
+export const BELIEF_SIGMAS = 2;
+export const BELIEF_RING_MM = 120;
+const NEVER_SEEN_FRAMES = 1 << 20;
+const BALL_FADE_FRAMES = 90; // 3 s without seeing it: drawn at its faintest
+
+// Semi-axes (mm, along the major then the minor axis) and the major axis's angle (rad, field
+// frame) of the BELIEF_SIGMAS ellipse of a 2x2 covariance [xx, xy, yy] (mm^2).
+export function covarianceEllipse(cov) {
+  const [xx, xy, yy] = cov, mid = (xx + yy) / 2, diff = Math.hypot((xx - yy) / 2, xy);
+  const major = Math.sqrt(Math.max(mid + diff, 0)), minor = Math.sqrt(Math.max(mid - diff, 0));
+  return { major_mm: BELIEF_SIGMAS * major, minor_mm: BELIEF_SIGMAS * minor, angle_rad: 0.5 * Math.atan2(2 * xy, xx - yy) };
+}
+
+function drawBelief(ctx, v, match, b, truth) {
+  const colour = BELIEF_COLOURS[b.team] || INACTIVE_COLOUR, out = { team: b.team, player: b.player, colour };
+  ctx.save();
+  ctx.strokeStyle = ctx.fillStyle = colour;
+  ctx.lineWidth = 2;
+  if (b.pose) {
+    const [x, y, th] = b.pose, px = v.px(x), py = v.py(y), ring = Math.max(5, BELIEF_RING_MM * v.s);
+    if (truth) {
+      ctx.save();
+      ctx.globalAlpha = 0.5;
+      ctx.lineWidth = 1;
+      ctx.setLineDash([2, 3]);
+      line(ctx, v, truth.body[0], truth.body[1], x, y);
+      ctx.restore();
+    }
+    if (b.cov) {
+      const e = covarianceEllipse(b.cov);
+      if (e.major_mm > 0) {
+        ctx.save();
+        ctx.beginPath();
+        ctx.ellipse(px, py, Math.max(1, e.major_mm * v.s), Math.max(1, e.minor_mm * v.s), -e.angle_rad, 0, 2 * Math.PI);
+        ctx.globalAlpha = 0.15;
+        ctx.fill();
+        ctx.globalAlpha = 0.8;
+        ctx.lineWidth = 1.5;
+        ctx.setLineDash([5, 4]);
+        ctx.stroke();
+        ctx.restore();
+        out.ellipse = { major_px: round1(e.major_mm * v.s), minor_px: round1(e.minor_mm * v.s),
+          angle_rad: Math.round(e.angle_rad * 1000) / 1000 };
+      }
+    }
+    ctx.setLineDash([4, 3]);
+    ctx.beginPath();
+    ctx.arc(px, py, ring, 0, 2 * Math.PI);
+    ctx.stroke();
+    ctx.setLineDash([]);
+    ctx.beginPath();
+    ctx.moveTo(px, py);
+    ctx.lineTo(px + 1.6 * ring * Math.cos(th), py - 1.6 * ring * Math.sin(th));
+    ctx.stroke();
+    out.pose = { ...pixel(v, b.pose), theta: th, ring_px: round1(ring) };
+  }
+  if (b.ball && b.ball_lost < NEVER_SEEN_FRAMES) {
+    const radius = Math.max(4.5, match.ball_diameter_mm / 2 * v.s) + 1;
+    const alpha = 1 - 0.65 * Math.min(Math.max(b.ball_lost, 0), BALL_FADE_FRAMES) / BALL_FADE_FRAMES;
+    ctx.globalAlpha = alpha;
+    ctx.setLineDash([3, 2]);
+    ctx.beginPath();
+    ctx.arc(v.px(b.ball[0]), v.py(b.ball[1]), radius, 0, 2 * Math.PI);
+    ctx.stroke();
+    out.ball = { ...pixel(v, b.ball), radius_px: round1(radius), alpha: Math.round(alpha * 100) / 100 };
+  }
+  ctx.restore();
+  return out;
+}
+
 function drawBall(ctx, v, diameterMm, ball) {
   const r = Math.max(4.5, diameterMm / 2 * v.s);
   ctx.save();
@@ -276,15 +370,20 @@ function clipToCarpet(ctx, v, f) {
 const pixel = (v, pose) => ({ x: pose[0], y: pose[1], px: round1(v.px(pose[0])), py: round1(v.py(pose[1])) });
 
 // Draws one truth frame over the field of `match` (the hello's), with the sonar of the same
-// frame's sense (or null); returns what it drew, in canvas pixels.
-export function drawTruth(ctx, v, match, truth, sense) {
+// frame's sense (or null), each robot's role and, with showBeliefs, what it believes
+// (`beliefs`, from its act); returns what it drew, in canvas pixels.
+export function drawTruth(ctx, v, match, truth, sense, beliefs = [], showBeliefs = true) {
   const key = (r) => `${r.team}/${r.player}`;
   const sonars = new Map((sense ? sense.robots : []).map((s) => [key(s), s.sonar]));
+  const believed = new Map((beliefs || []).map((b) => [key(b), b]));
+  const truthOf = new Map(truth.robots.map((r) => [key(r), r]));
   ctx.save();
   clipToCarpet(ctx, v, match.field); // the boundary walls: no camera sees past them
   const robots = truth.robots.map((r) => ({ r, cone: drawCameraCone(ctx, v, match.camera, r) }));
   ctx.restore();
   for (const robot of robots) robot.sonar = drawSonar(ctx, v, match.sonar, robot.r, sonars.get(key(robot.r)));
+  // Beliefs under the truth: the robots and the ball as they are stay whole on top.
+  const drawnBeliefs = showBeliefs ? [...believed.values()].map((b) => drawBelief(ctx, v, match, b, truthOf.get(key(b)))) : [];
   for (const robot of robots) {
     const { r } = robot;
     drawFoot(ctx, v, match.foot, r.left, robotColour(r));
@@ -296,14 +395,17 @@ export function drawTruth(ctx, v, match, truth, sense) {
   for (const robot of robots) {
     drawNumber(ctx, v, robot.r);
     robot.badges = drawBadges(ctx, v, robot.r);
+    const belief = believed.get(key(robot.r));
+    robot.role = drawRole(ctx, v, robot.r, belief ? belief.role : null);
   }
-  const ballRadius = drawBall(ctx, v, match.ball_diameter_mm, truth.ball);
+  const ballRadius = truth.ball ? drawBall(ctx, v, match.ball_diameter_mm, truth.ball) : 0;
   return {
-    ball: { ...pixel(v, truth.ball), radius_px: round1(ballRadius), colour: BALL_COLOUR },
-    robots: robots.map(({ r, cone, sonar, badges, led }) => ({
+    ball: truth.ball ? { ...pixel(v, truth.ball), radius_px: round1(ballRadius), colour: BALL_COLOUR } : null,
+    robots: robots.map(({ r, cone, sonar, badges, led, role }) => ({
       team: r.team, player: r.player, active: r.active, penalised: r.penalised, fallen: r.fallen,
       colour: robotColour(r), body: { ...pixel(v, r.body), theta: r.body[2] },
-      left: pixel(v, r.left), right: pixel(v, r.right), camera: cone, sonar, badges, led,
+      left: pixel(v, r.left), right: pixel(v, r.right), camera: cone, sonar, badges, led, role,
     })),
+    beliefs: drawnBeliefs,
   };
 }

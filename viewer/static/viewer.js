@@ -1,12 +1,20 @@
-// The viewer page: one WebSocket to the server (hello, then frames), the HUD, the replay
-// controls, and window.viewer, the API that tests and the exporter drive.
+// The viewer page: one WebSocket to the server (hello, then frames), the HUD, the beliefs
+// toggle, the replay controls and timeline, and window.viewer, the API that tests and the
+// exporter drive.
 import { drawField, drawTruth, makeView } from "./draw.js";
+import { drawTimeline, markerAt, xToTime } from "./timeline.js";
 
 const $ = (id) => document.getElementById(id);
 const GAME_STATES = ["INITIAL", "READY", "SET", "PLAYING", "FINISHED", "STANDBY"];
 const canvas = $("field");
 const ctx = canvas.getContext("2d");
-if (new URLSearchParams(location.search).has("export")) document.body.classList.add("export");
+const params = new URLSearchParams(location.search);
+if (params.has("export")) document.body.classList.add("export");
+let showBeliefs = params.get("beliefs") !== "0"; // ?beliefs=0 starts with them hidden
+$("beliefs").checked = showBeliefs;
+const strip = $("timeline");
+const stripCtx = strip.getContext("2d");
+let strips = null; // what the timeline drew last: markers with their x, the playhead
 
 let hello = null;   // {mode, source, match (TL_MATCH: null live until it comes), replay?}
 let frame = null;   // the last frame received: {truth, sense, game, status, events, replay?, ack}
@@ -34,6 +42,7 @@ function onHello(message) {
   hello = message;
   const replay = message.mode === "replay";
   $("controls").hidden = !replay;
+  strip.hidden = !replay;
   $("source").textContent = replay ? `replay: ${message.source}` : `live: ${message.source}`;
   if (replay) {
     const scrub = $("scrub");
@@ -66,7 +75,8 @@ function draw() {
     const view = makeView(match.field, box.width, box.height);
     lastView = view;
     drawField(ctx, view, match.field);
-    drawn = frame && frame.truth ? drawTruth(ctx, view, match, frame.truth, frame.sense) : null;
+    drawn = frame && frame.truth
+      ? drawTruth(ctx, view, match, frame.truth, frame.sense, frame.beliefs, showBeliefs) : null;
   } else {
     ctx.fillStyle = "#1b1f24";
     ctx.fillRect(0, 0, box.width, box.height);
@@ -77,9 +87,45 @@ function draw() {
     ctx.textAlign = "center";
     ctx.fillText(match ? "waiting for TL_TRUTH…" : "waiting for the match's TL_MATCH…", box.width / 2, box.height / 2);
   }
+  drawStrip();
   const out = $("state");
   out.textContent = JSON.stringify(state());
   out.dataset.frame = frame && frame.truth ? frame.truth.frame : "";
+}
+
+function drawStrip() {
+  strips = null;
+  if (!hello || !hello.replay || strip.hidden) return;
+  const box = strip.getBoundingClientRect(), dpr = window.devicePixelRatio || 1;
+  strip.width = Math.round(box.width * dpr);
+  strip.height = Math.round(box.height * dpr);
+  stripCtx.setTransform(dpr, 0, 0, dpr, 0, 0);
+  const now = frame && frame.replay ? frame.replay.t : null;
+  strips = { width: box.width, height: box.height,
+    ...drawTimeline(stripCtx, box.width, box.height, [hello.replay.t0, hello.replay.t1], hello.timeline || [], now) };
+}
+
+function stripX(event) {
+  return event.clientX - strip.getBoundingClientRect().left;
+}
+
+strip.addEventListener("click", (event) => {
+  if (!strips) return;
+  const x = stripX(event), marker = markerAt(strips.markers, x);
+  // A marker shows its effect: the first frame at or after it (the goal scored, the robot down).
+  command(marker ? { cmd: "seek", t: marker.t, after: true }
+    : { cmd: "seek", t: xToTime(x, [hello.replay.t0, hello.replay.t1], strips.width) });
+});
+strip.addEventListener("mousemove", (event) => {
+  const marker = strips && markerAt(strips.markers, stripX(event));
+  strip.title = marker ? `${marker.t.toFixed(1)} s ${marker.kind}: ${marker.text}` : "click to jump there";
+});
+
+function setBeliefs(on) {
+  showBeliefs = Boolean(on);
+  $("beliefs").checked = showBeliefs;
+  draw();
+  return state();
 }
 
 function state() {
@@ -96,6 +142,9 @@ function state() {
     ack: frame ? frame.ack : null,
     ball: drawn ? drawn.ball : null,
     robots: drawn ? drawn.robots : [],
+    show_beliefs: showBeliefs,
+    beliefs: drawn ? drawn.beliefs : [],
+    timeline: strips,
     events: frame ? frame.events || [] : [],
   };
 }
@@ -157,15 +206,20 @@ $("scrub").addEventListener("pointerdown", () => { scrubbing = true; });
 $("scrub").addEventListener("pointerup", () => { scrubbing = false; });
 $("scrub").addEventListener("change", () => { scrubbing = false; });
 $("scrub").addEventListener("input", (e) => command({ cmd: "seek", t: Number(e.target.value) }));
+$("beliefs").addEventListener("change", (e) => setBeliefs(e.target.checked));
 window.addEventListener("keydown", (e) => {
-  if (!hello || hello.mode !== "replay" || e.target.tagName === "INPUT" || e.target.tagName === "SELECT") return;
-  if (e.key === " ") command({ cmd: "toggle" });
+  const typing = e.target.tagName === "SELECT" || (e.target.tagName === "INPUT" && e.target.type !== "checkbox");
+  if (!hello || typing) return;
+  if (e.key === "b") setBeliefs(!showBeliefs);
+  else if (hello.mode !== "replay") return;
+  else if (e.key === " ") command({ cmd: "toggle" });
   else if (e.key === "ArrowLeft") command({ cmd: "step", n: -1 });
   else if (e.key === "ArrowRight") command({ cmd: "step", n: 1 });
   else return;
   e.preventDefault();
 });
 new ResizeObserver(() => draw()).observe($("stage"));
+new ResizeObserver(() => draw()).observe(strip);
 
 window.viewer = {
   ready,
@@ -176,5 +230,6 @@ window.viewer = {
   step: (n = 1) => command({ cmd: "step", n }),
   seek: (t) => command({ cmd: "seek", t }),
   setSpeed: (x) => command({ cmd: "speed", x }),
+  setBeliefs: async (on) => setBeliefs(on),
 };
 connect();

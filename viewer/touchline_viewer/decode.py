@@ -1,11 +1,13 @@
-"""LCM messages (TL_MATCH, TL_TRUTH, TL_SENSE, TL_GAME, TL_STATUS, TL_EVENT) to the JSON-ready
-dicts the page draws."""
+"""LCM messages (TL_MATCH, TL_TRUTH, TL_SENSE, TL_GAME, TL_STATUS, TL_EVENT, TL_ACT_<team>_<player>)
+to the JSON-ready dicts the page draws."""
+import math
 import struct
 
 from .field import MATCH, match_dict
 from .lcm_types import import_touchline
 
 TRUTH, SENSE, GAME, STATUS, EVENT = "TL_TRUTH", "TL_SENSE", "TL_GAME", "TL_STATUS", "TL_EVENT"
+ACT_PATTERN = "TL_ACT_.*"  # each robot's answer: its belief and its team message
 CHANNELS = (MATCH, TRUTH, SENSE, GAME, STATUS, EVENT)
 STATUS_NAMES = {1: "JOINED", 2: "ACTIVE", 3: "TIMED_OUT", 4: "REJOINED", 5: "REJECTED"}
 EVENT_KINDS = {0: "STATE_CHANGE", 1: "GOAL", 2: "PENALTY", 3: "RELEASED", 4: "FALL", 5: "BALL_OUT", 6: "SET_PLAY", 7: "GAME_STUCK"}
@@ -59,12 +61,45 @@ def event_dict(data: bytes) -> dict:
             "player": m.player, "text": m.text}
 
 
+# The role a robot plays, as our Team behaviours (behaviour_py/skills/team_comm.py and its C++
+# port) say it in every team message: 10 bytes, byte 0 the message version (1), byte 2 the role.
+# The robot sends it in act_t.team_message every 6 frames (5 Hz); a behaviour that sends no such
+# message has no role to show.
+TEAM_MESSAGE_VERSION, TEAM_MESSAGE_SIZE = 1, 10
+ROLES = {1: "goalie", 2: "striker", 3: "defender", 4: "midfielder"}
+
+
+def role_in_message(message: bytes):
+    """The role named in a team message of our Team behaviours, or None (another format, or none)."""
+    if len(message) != TEAM_MESSAGE_SIZE or message[0] != TEAM_MESSAGE_VERSION:
+        return None
+    return ROLES.get(message[2])
+
+
+def _finite(*values) -> bool:
+    return all(math.isfinite(v) for v in values)
+
+
+def act_belief(data: bytes) -> dict:
+    """What a robot believes in the frame its act_t answers (field frame): its pose, the position
+    covariance (xx, xy, yy, mm^2; all 0 with perfect localisation), the ball and the frames since
+    it saw it; `pose`, `cov` or `ball` is None where the robot sent something not finite. `role`:
+    the role its team message names, None without one (the caller keeps the last)."""
+    m = _types.act_t.decode(data)
+    p, cov = m.localised, list(m.localised_cov_mm2)
+    return {"team": m.team, "player": m.player, "frame": m.frame,
+            "pose": _pose(p) if _finite(p.x_mm, p.y_mm, p.theta_rad) else None,
+            "cov": [round(v, 1) for v in cov] if _finite(*cov) else None,
+            "ball": [round(m.ball_x_mm, 1), round(m.ball_y_mm, 1)] if _finite(m.ball_x_mm, m.ball_y_mm) else None,
+            "ball_lost": m.ball_lost_frames, "role": role_in_message(bytes(m.team_message))}
+
+
 DECODERS = {MATCH: match_dict, TRUTH: truth_dict, SENSE: sense_dict, GAME: game_dict, STATUS: status_dict, EVENT: event_dict}
 
 
 def decode(channel: str, data: bytes):
     """The message as a dict, or None for another channel or a message that does not decode."""
-    decoder = DECODERS.get(channel)
+    decoder = DECODERS.get(channel) or (act_belief if channel.startswith("TL_ACT_") else None)
     if decoder is None:
         return None
     try:

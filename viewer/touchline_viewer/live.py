@@ -1,17 +1,20 @@
 """Live view: subscribes to LCM and pushes the latest truth (with its frame's sonar), game
-state, robot statuses and match events to every connected page, at most ~30 times a second,
+state, robot statuses, match events and each robot's belief and role (its TL_ACT_<team>_<player>)
+to every connected page, at most ~30 times a second,
 once the match's geometry (TL_MATCH) is known; a new TL_MATCH (another match) is a new hello."""
 import asyncio
 from collections import deque
 
 import lcm
 
-from .decode import CHANNELS, EVENT, GAME, RECENT_EVENTS, SENSE, STATUS, TRUTH, decode
+from .decode import ACT_PATTERN, CHANNELS, EVENT, GAME, RECENT_EVENTS, SENSE, STATUS, TRUTH, decode
 from .errors import ViewerError
 from .field import MATCH
+from .replay_log import BELIEF_STALE_FRAMES, ROLE_STALE_FRAMES
 
 DEFAULT_LCM_URL = "udpm://239.255.76.67:7667?ttl=0"
 SEND_PERIOD_S = 1 / 30
+RECENT_ACTS = 8  # acts (and roles) kept per robot to pick the truth's own frame's
 RECENT_GAMES = 8  # game states kept to pick the one current at the truth's time (they come at 1 Hz)
 
 
@@ -25,7 +28,7 @@ class LiveSource:
         except (RuntimeError, OSError, ValueError) as e:
             hint = " (no multicast route? ip route add 224.0.0.0/4 dev lo)" if url.startswith("udpm") else ""
             raise ViewerError(f"cannot open LCM at {url}: {e}{hint}") from None
-        for channel in CHANNELS:
+        for channel in (*CHANNELS, ACT_PATTERN):
             self.lc.subscribe(channel, self._on_message)
         self.match = None  # the latest TL_MATCH: the page draws nothing before it
         self.truth = self.sense = None  # sense: the TL_SENSE of the truth's frame
@@ -33,6 +36,10 @@ class LiveSource:
         self._latest_sense = None
         self.statuses: dict = {}
         self.events: deque = deque(maxlen=RECENT_EVENTS)
+        # The acts of frame k + 1 come right after the truth of frame k: a few are kept per robot
+        # so that the truth drawn gets the act of its own frame, as in the replay.
+        self.beliefs: dict = {}  # (team, player) -> deque of its latest acts' beliefs
+        self.roles: dict = {}  # (team, player) -> deque of (frame, role) of its latest team messages naming one
         self.version = 0  # bumped by every decoded message
         self.clients: set = set()  # each has async hello(dict) and frame(dict)
         self._task = None
@@ -59,7 +66,17 @@ class LiveSource:
     def frame(self) -> dict:
         return {"truth": self.truth, "sense": self.sense, "game": self.game(),
                 "status": [self.statuses[k] for k in sorted(self.statuses)], "events": list(self.events),
-                "ack": None}
+                "beliefs": self.beliefs_now(), "ack": None}
+
+    def beliefs_now(self) -> list:
+        """The beliefs of the truth's frame, as the replay picks them (ReplayLog.beliefs_at)."""
+        frame, beliefs = self.truth["frame"], []
+        for key in sorted(self.beliefs):
+            belief = next((b for b in reversed(self.beliefs[key]) if b["frame"] <= frame), None)
+            if belief is not None and frame - belief["frame"] <= BELIEF_STALE_FRAMES:
+                role = next((r for f, r in reversed(self.roles.get(key, ())) if 0 <= frame - f <= ROLE_STALE_FRAMES), None)
+                beliefs.append({**belief, "role": role})
+        return beliefs
 
     def _on_message(self, channel: str, data: bytes) -> None:
         message = decode(channel, data)  # handlers never throw: a bad message is dropped
@@ -83,6 +100,11 @@ class LiveSource:
             self.games.append(message)
         elif channel == STATUS:
             self.statuses[(message["team"], message["player"])] = message
+        elif channel.startswith("TL_ACT_"):
+            key = (message["team"], message["player"])
+            self.beliefs.setdefault(key, deque(maxlen=RECENT_ACTS)).append(message)
+            if message["role"] is not None:
+                self.roles.setdefault(key, deque(maxlen=RECENT_ACTS)).append((message["frame"], message["role"]))
         self.version += 1
 
     async def _broadcast(self) -> None:

@@ -19,7 +19,8 @@ class ReplaySession:
 
     def hello(self) -> dict:
         return {"mode": "replay", "source": self.log.name, "match": self.log.match, "speeds": SPEEDS,
-                "replay": {"t0": self.log.t0, "t1": self.log.t1, "count": self.log.count}}
+                "replay": {"t0": self.log.t0, "t1": self.log.t1, "count": self.log.count},
+                "timeline": self.log.timeline}
 
     async def run(self) -> None:
         """Sends the first frame, then obeys commands and plays until cancelled."""
@@ -48,8 +49,9 @@ class ReplaySession:
             elif cmd == "step":
                 self._play(False)
                 self.index = min(max(self.index + int(command.get("n", 1)), 0), self.log.count - 1)
-            elif cmd == "seek":
-                self.index = self.log.index_at(float(command["t"]))
+            elif cmd == "seek":  # "after": the first frame at or after t (a timeline marker's effect)
+                t = float(command["t"])
+                self.index = self.log.index_after(t) if command.get("after") else self.log.index_at(t)
                 self._reanchor()
             elif cmd == "speed":
                 self.speed = min(SPEEDS, key=lambda s: abs(s - float(command["x"])))
@@ -78,7 +80,7 @@ class ReplaySession:
         return changed
 
     async def _send_frame(self, ack) -> None:
-        frame = self.log.frame(self.index)
+        frame = dict(self.log.frame(self.index))  # the log's frames are cached: add to a copy
         frame["replay"] = {"index": self.index, "count": self.log.count, "t": self.log.utimes[self.index] / 1e6,
                            "playing": self.playing, "speed": self.speed}
         frame["ack"] = ack

@@ -197,6 +197,11 @@ struct RobotAct {
   int32_t leds = 0;         ///< chest LED, 0xRRGGBB (the world shows it in its truth)
   int64_t behaviour_cpu_us = 0; ///< CPU time of this frame's behaviour tick (thread CPU clock)
   Pose2D localised;             ///< where the robot believes it is (field frame)
+  /// What else it believes, for the viewer (the world reads none of it): localised's position
+  /// covariance xx, xy, yy (mm^2; a half turn into the field frame leaves it as it is), ...
+  std::array<float, 3> localised_cov_mm2{};
+  float ball_x_mm = 0, ball_y_mm = 0; ///< ... the ball (field frame), ...
+  int32_t ball_lost_frames = 0;       ///< ... and frames since it last saw the ball
   std::vector<uint8_t> team_message; ///< to the teammates (empty: none this frame)
 };
 

@@ -33,6 +33,10 @@ RobotAct sample_act() {
   act.head_pitch_rad = -0.1f;
   act.leds = 0x123456;
   act.behaviour_cpu_us = 1234;
+  act.localised_cov_mm2 = {2500, -40, 900};
+  act.ball_x_mm = -750;
+  act.ball_y_mm = 120;
+  act.ball_lost_frames = 9;
   return act;
 }
 
@@ -97,6 +101,10 @@ TEST(Codec, ActSurvivesEncodeAndDecode) {
   }
   EXPECT_EQ(out.leds, in.leds);
   EXPECT_EQ(out.behaviour_cpu_us, 1234);
+  EXPECT_EQ(out.localised_cov_mm2, in.localised_cov_mm2); // the belief the viewer draws
+  EXPECT_EQ(out.ball_x_mm, in.ball_x_mm);
+  EXPECT_EQ(out.ball_y_mm, in.ball_y_mm);
+  EXPECT_EQ(out.ball_lost_frames, in.ball_lost_frames);
 }
 
 TEST(Codec, SenseSurvivesEncodeAndDecode) {
