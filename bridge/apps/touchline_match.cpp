@@ -199,8 +199,9 @@ int main(int argc, char** argv) {
     transport::TruthHash truth_hash;
     std::optional<transport::MatchRecorder> recorder;
     if (!log_path.empty()) recorder.emplace(log_path);
-    const auto record_bytes = [&](const char* channel, const std::vector<uint8_t>& bytes) {
-      recorder->record(channel, bytes.data(), static_cast<int>(bytes.size()), match.utime());
+    const auto record_bytes = [&](const std::string& channel, const std::vector<uint8_t>& bytes,
+                                  std::optional<int64_t> utime = std::nullopt) {
+      recorder->record(channel, bytes.data(), static_cast<int>(bytes.size()), utime.value_or(match.utime()));
       if (!recorder->error().empty()) throw std::runtime_error(recorder->error()); // no log with a hole
     };
     // Messages are encoded only when there is a log to write them to.
@@ -216,7 +217,14 @@ int main(int argc, char** argv) {
     // As the world node runs its lockstep frames: every robot answers, the world steps, and
     // the truth after the step goes into the hash.
     while (!match.finished() && !g_stop_signal) {
+      const int64_t sense_utime = match.utime();
       play->step_frame();
+      // Each robot's answer, as sim_world logs a robot_shim's act: at its frame's time, before
+      // the truth it led to (the viewer shows roles and beliefs from them).
+      if (recorder)
+        for (const RobotAct& act : play->acts())
+          record_bytes(transport::act_channel(act.id), transport::encoded(transport::to_lcm(act, sense_utime, 0)), // no process: instance 0
+                       sense_utime);
       const std::vector<uint8_t> truth = transport::encoded(transport::to_msg(match.truth()));
       truth_hash.add(truth.data(), truth.size());
       if (recorder) record_bytes(transport::kTruthChannel, truth);

@@ -31,13 +31,14 @@ void InProcessMatch::step_frame() {
   auto t0 = Clock::now();
   const SenseFrame frame = match_.sense();
   world_ns_ += ns_since(t0);
+  acts_.clear();
   for (size_t i = 0; i < robots_.size(); ++i) {
     robot::Robot& robot = *robots_[i];
     const RobotSense* sense = frame.find(robot.id());
     if (!sense) continue;
-    const RobotAct act = robot.step(frame, *sense);
+    acts_.push_back(robot.step(frame, *sense));
     t0 = Clock::now();
-    match_.apply(act, kInstance + static_cast<int64_t>(i));
+    match_.apply(acts_.back(), kInstance + static_cast<int64_t>(i));
     world_ns_ += ns_since(t0);
   }
   t0 = Clock::now();

@@ -120,13 +120,13 @@ def test_help_documents_the_world_and_the_robots():
 
 
 def test_the_in_process_log_holds_what_the_world_says(tmp_path):
-    """touchline_match --log: the world's own messages (no bus, so no robot's), readable as a
-    lockstep match's log: the set-up first, a truth per frame, the game, the events."""
+    """touchline_match --log: the world's messages and each robot's answer, readable as a
+    lockstep match's log: the set-up first, a truth per frame, the game, the events, the acts."""
     sys.path.insert(0, str(BUILD / "lcm_types" / "gen" / "python"))
     sys.path.insert(0, str(ROOT / "tools"))
     import lcm
     import match_stats
-    from touchline import game_state_t, match_event_t, world_truth_t
+    from touchline import act_t, game_state_t, match_event_t, world_truth_t
 
     log = tmp_path / "match.lcmlog"
     summary = tmp_path / "summary.json"
@@ -151,3 +151,11 @@ def test_the_in_process_log_holds_what_the_world_says(tmp_path):
     # The statistics a sweep takes from a lockstep log come from this one too.
     stats = match_stats.analyse_log(log)
     assert sum(stats["possession_frames"]) > 0
+    # Each robot's act of each frame, on its own channel, before the truth that frame ends in.
+    for channel, team in (("TL_ACT_0_2", 0), ("TL_ACT_1_2", 1)):
+        acts = [(i, act_t.decode(e.data)) for i, e in enumerate(events) if e.channel == channel]
+        assert [a.frame for _, a in acts] == list(range(played["frames"]))
+        assert all(a.team == team and a.player == 2 for _, a in acts)
+        first_truth = next(i for i, e in enumerate(events) if e.channel == "TL_TRUTH")
+        assert acts[0][0] < first_truth
+        assert any(a.team_message for _, a in acts)  # the Team's messages: the viewer's roles

@@ -30,6 +30,10 @@ class InProcessMatch {
   /// not in the robots: the fastest this match could run if robot code cost nothing.
   double world_wall_s() const { return static_cast<double>(world_ns_) * 1e-9; }
 
+  /// The robots' answers in the last frame, in the order they were added (what robot_shims
+  /// send on TL_ACT_<team>_<player>: touchline_match logs them so a log is the same shape).
+  const std::vector<RobotAct>& acts() const { return acts_; }
+
   sim::Match& match() { return match_; }
   const sim::Match& match() const { return match_; }
   robot::Robot& robot(RobotId id);
@@ -38,6 +42,7 @@ class InProcessMatch {
  private:
   sim::Match match_;
   std::vector<std::unique_ptr<robot::Robot>> robots_;
+  std::vector<RobotAct> acts_;
   int64_t world_ns_ = 0;
 };
 
