@@ -135,7 +135,8 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     p.add_argument("--quiet", action="store_true", help="print only warnings, errors and the summary: no progress, "
                    "no launcher lines (--log-level warning --no-progress)")
     p.add_argument("--log-level", choices=LOG_LEVELS, default="info",
-                   help="the launcher's own lines: debug adds each program's command line (default info)")
+                   help="the launcher's and its programs' lines: debug adds each program's command line, warning "
+                        "keeps only what went wrong (default info)")
     for option, keywords in SHIM_OPTIONS:
         p.add_argument(option, **keywords)
     args = p.parse_args(argv)
@@ -194,10 +195,10 @@ def team_behaviour(spec: str, runswift_dir: Path | None = None) -> list | None:
 
 def match_options(a: argparse.Namespace) -> list:
     """The match's options both world programs take (sim_world, touchline_match): config,
-    team size, duration, overrides, seed."""
+    team size, duration, overrides, seed, and the launcher's --log-level for their lines."""
     return ["--config", a.config, "--set", f"match.team_size={a.team_size}",
             *(["--duration", a.duration] if a.duration else []),
-            *[arg for item in a.set for arg in ("--set", item)], "--seed", a.seed]
+            *[arg for item in a.set for arg in ("--set", item)], "--seed", a.seed, "--log-level", a.log_level]
 
 
 def world_options(a: argparse.Namespace) -> list:
@@ -235,7 +236,8 @@ def shim_command(a: argparse.Namespace, bin_shim: Path, team: int, player: int, 
             passed += [option] if value else []
         elif value is not None:
             passed += [option, value]
-    bus = [] if a.in_process else ["--lcm-url", a.lcm_url]  # touchline_match's robots have no bus
+    # touchline_match's robots have no bus, and their lines are touchline_match's
+    bus = [] if a.in_process else ["--lcm-url", a.lcm_url, "--log-level", a.log_level]
     return [bin_shim, "--team", team, "--player", player, "--walk-config", a.walk_config, "--walk-engine", engine,
             "--field-config", a.config, *bus, *(["--data-dir", a.data_dir] if a.data_dir else []),
             *passed, *behaviour]

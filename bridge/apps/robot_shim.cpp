@@ -12,6 +12,7 @@
 #include <boost/program_options.hpp>
 #include <pybind11/embed.h>
 
+#include "touchline/apps/program_log.hpp"
 #include "touchline/apps/robot_options.hpp"
 #include "touchline/behaviour/registry.hpp"
 #include "touchline/ini.hpp"
@@ -85,6 +86,8 @@ int main(int argc, char** argv) {
       "Usage: robot_shim --team T --player N [options]\nOptions");
   options.add_options()("help,h", "print this help and exit")("version", kVersionHelp);
   apps::add_robot_options(options, robot_options);
+  std::string log_level;
+  apps::add_log_level_option(options, log_level);
   options.add_options()
     ("check", "check the options, the config files and the behaviour as for a match and exit (0, or 2 with the "
      "one-line error) without joining one: a C++ behaviour is made with its --param values; for Python only "
@@ -94,6 +97,7 @@ int main(int argc, char** argv) {
 
   std::optional<pybind11::scoped_interpreter> interpreter; // only for py; outlives the behaviour
   std::unique_ptr<api::Behaviour> behaviour;
+  std::shared_ptr<spdlog::logger> log = apps::program_log("robot_shim");
   try {
     po::variables_map vm;
     po::store(po::command_line_parser(argc, argv).options(options).run(), vm);
@@ -103,6 +107,7 @@ int main(int argc, char** argv) {
     }
     if (version_requested(vm, "robot_shim")) return 0;
     po::notify(vm);
+    apps::set_log_level(*log, log_level);
     node.key = transport::load_match_key(robot_options.secret_file);
     apps::finish_robot_options(robot_options);
     // Before the interpreter: the check redirects stderr for a moment, so no other thread may run.
@@ -125,34 +130,38 @@ int main(int argc, char** argv) {
     behaviour = apps::make_robot_behaviour(
         robot_options, "robot_shim " + std::to_string(def.id.team) + "/" + std::to_string(def.id.player));
   } catch (const po::error& e) {
-    std::cerr << "robot_shim: " << e.what() << " (see --help)\n";
+    log->error("{} (see --help)", e.what());
     return kUsageError;
   } catch (const ConfigError& e) {
-    std::cerr << "robot_shim: " << e.what() << "\n";
+    log->error("{}", e.what());
     return kUsageError;
   } catch (const behaviour::BehaviourError& e) {
-    std::cerr << "robot_shim: " << e.what() << "\n";
+    log->error("{}", e.what());
     return kUsageError;
   } catch (const python::PythonBehaviourError& e) {
     if (g_stop_signal) return stop_status(); // stopped while the module was imported
-    std::cerr << "robot_shim: " << e.what() << "\n";
+    log->error("{}", e.what());
     return kUsageError;
   } catch (const std::invalid_argument& e) { // the match secret
-    std::cerr << "robot_shim: " << e.what() << "\n";
+    log->error("{}", e.what());
     return kUsageError;
   }
 
+  // From here on its lines name the robot, as its behaviour's lines do.
+  const std::shared_ptr<spdlog::logger> robot_log =
+      apps::program_log("robot_shim " + std::to_string(def.id.team) + "/" + std::to_string(def.id.player));
+  robot_log->set_level(log->level());
   try {
     robot::Robot robot(std::move(def), std::move(behaviour));
     if (g_stop_signal) return stop_status(); // before run_robot, which starts afresh
-    switch (transport::run_robot(robot, node, std::cerr)) {
+    switch (transport::run_robot(robot, node, *robot_log)) {
       case transport::RobotExit::kMatchOver: return 0;
       case transport::RobotExit::kRejected: return kUsageError;
       case transport::RobotExit::kNoWorld: return 1;
       case transport::RobotExit::kInterrupted: return stop_status();
     }
   } catch (const std::exception& e) {
-    std::cerr << "robot_shim: " << e.what() << "\n";
+    robot_log->error("{}", e.what());
   }
   return 1;
 }

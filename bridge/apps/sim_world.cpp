@@ -8,6 +8,7 @@
 
 #include <boost/program_options.hpp>
 
+#include "touchline/apps/program_log.hpp"
 #include "touchline/apps/summary_json.hpp"
 #include "touchline/cli.hpp"
 #include "touchline/lcm/lcm_url.hpp"
@@ -104,10 +105,15 @@ int main(int argc, char** argv) {
     ("gamecontroller", po::value(&gamecontroller),
      "take the game from the official SPL GameController's UDP packets (versions 15 and 18) on [ADDRESS:]PORT, e.g. 127.0.0.1:3838, instead of the built-in referee")
     ("log", po::value(&node.log_path), "record every message of the match to this LCM event log (lcm-logger format; timestamps are simulated time; checked writable at start)")
-    ("quiet", "no progress lines")
+    ("quiet", "no progress lines (the match's events and its speed every 10 s)")
     ("check", "check the options and the config (with every --set) as for a match, print the match's planned "
-     "length as one JSON line ({\"planned_s\", \"goal_stoppage_s\", \"duration_s\", \"team_size\"}) and exit: "
+     "length as one JSON line ({\"planned_s\", \"goal_stoppage_s\", \"duration_s\", \"team_size\", \"field_length_mm\", "
+     "\"field_width_mm\"}) and exit: "
      "0, or 2 with the one-line error");
+
+  std::string log_level;
+  apps::add_log_level_option(options, log_level);
+  const std::shared_ptr<spdlog::logger> log = apps::program_log("sim_world");
 
   sim::WorldConfig config;
   try {
@@ -119,6 +125,7 @@ int main(int argc, char** argv) {
     }
     if (version_requested(vm, "sim_world")) return 0;
     po::notify(vm);
+    apps::set_log_level(*log, log_level);
     node.pacing = parse_mode(mode);
     node.key = transport::load_match_key(secret_file);
     node.progress = !vm.count("quiet");
@@ -141,13 +148,13 @@ int main(int argc, char** argv) {
       return 0;
     }
   } catch (const po::error& e) {
-    std::cerr << "sim_world: " << e.what() << " (see --help)\n";
+    log->error("{} (see --help)", e.what());
     return kUsageError;
   } catch (const ConfigError& e) {
-    std::cerr << "sim_world: " << e.what() << "\n";
+    log->error("{}", e.what());
     return kUsageError;
   } catch (const std::invalid_argument& e) { // the match secret
-    std::cerr << "sim_world: " << e.what() << "\n";
+    log->error("{}", e.what());
     return kUsageError;
   }
 
@@ -155,12 +162,12 @@ int main(int argc, char** argv) {
   std::signal(SIGTERM, [](int) { transport::request_stop(); });
   try {
     sim::Match match(config, seed);
-    const transport::RunSummary summary = transport::run_world(match, node, std::cerr);
+    const transport::RunSummary summary = transport::run_world(match, node, *log);
     print_summary(match, summary);
     if (!node.summary_path.empty()) apps::write_summary_json(node.summary_path, match, summary, seed);
     return summary.interrupted ? 130 : 0;
   } catch (const std::exception& e) {
-    std::cerr << "sim_world: " << e.what() << "\n";
+    log->error("{}", e.what());
     return 1;
   }
 }

@@ -14,6 +14,7 @@
 #include <boost/program_options.hpp>
 #include <pybind11/embed.h>
 
+#include "touchline/apps/program_log.hpp"
 #include "touchline/apps/robot_options.hpp"
 #include "touchline/apps/summary_json.hpp"
 #include "touchline/behaviour/registry.hpp"
@@ -83,10 +84,9 @@ double process_cpu_s() {
   return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
 }
 
-void print_progress(const sim::Match& match, double wall_s) {
+void log_progress(spdlog::logger& log, const sim::Match& match, double wall_s) {
   const double sim_s = static_cast<double>(match.utime()) * 1e-6;
-  std::cerr << "touchline_match: " << std::fixed << std::setprecision(0) << sim_s << " s simulated, x"
-            << std::setprecision(1) << sim_s / std::max(wall_s, 1e-9) << " real time\n" << std::flush;
+  log.info("{:.0f} s simulated, x{:.1f} real time", sim_s, sim_s / std::max(wall_s, 1e-9));
 }
 
 } // namespace
@@ -111,12 +111,16 @@ int main(int argc, char** argv) {
      "match's events (goals, penalties, falls, set plays) as \"match_events\", the world's own wall time "
      "(world_wall_s, physics_rtf) and the match's CPU time (cpu_s, cpu_rtf) (checked writable at start)")
     ("log", po::value(&log_path),
-     "record the match to this LCM event log as sim_world --log does, what the world says: TL_MATCH, "
-     "TL_GAME, TL_TRUTH every frame, TL_EVENT (there is no bus, so no robot messages; timestamps are "
+     "record the match to this LCM event log as sim_world --log does: TL_MATCH, TL_GAME, TL_TRUTH every "
+     "frame, TL_EVENT and each robot's TL_ACT_<team>_<player> every frame (no TL_SENSE; timestamps are "
      "simulated time; checked writable at start)")
-    ("print-match", "print the match's set-up (team size, field size, duration: the config after every "
-     "--set) as one JSON line and exit, without robots")
+    ("print-match", "print the match's plan as sim_world --check does (planned length, goal stoppage, duration, "
+     "team size, field size: the config after every --set) as one JSON line and exit, without robots")
     ("quiet", "no progress lines");
+
+  std::string log_level;
+  apps::add_log_level_option(options, log_level);
+  const std::shared_ptr<spdlog::logger> log = apps::program_log("touchline_match");
 
   const auto args = groups(argc, argv);
   sim::WorldConfig config;
@@ -132,6 +136,7 @@ int main(int argc, char** argv) {
     if (version_requested(vm, "touchline_match")) return 0;
     po::notify(vm);
     quiet = vm.count("quiet") > 0;
+    apps::set_log_level(*log, log_level);
     if (vm.count("duration")) overrides.push_back("match.duration_s=" + format_number(duration_s));
     config = sim::load_world_config(config_path, overrides);
     if (vm.count("print-match")) {
@@ -153,10 +158,10 @@ int main(int argc, char** argv) {
                         " differs from robot 1's (" + robots.front().data_dir + "); one process has one");
     }
   } catch (const po::error& e) {
-    std::cerr << "touchline_match: " << e.what() << " (see --help)\n";
+    log->error("{} (see --help)", e.what());
     return kUsageError;
   } catch (const ConfigError& e) {
-    std::cerr << "touchline_match: " << e.what() << "\n";
+    log->error("{}", e.what());
     return kUsageError;
   }
 
@@ -186,10 +191,10 @@ int main(int argc, char** argv) {
     }
   } catch (const python::PythonBehaviourError& e) {
     if (g_stop_signal) return 128 + g_stop_signal; // stopped while a module was imported
-    std::cerr << "touchline_match: " << e.what() << "\n";
+    log->error("{}", e.what());
     return kUsageError;
   } catch (const std::exception& e) { // ConfigError, behaviour::BehaviourError
-    std::cerr << "touchline_match: " << e.what() << "\n";
+    log->error("{}", e.what());
     return kUsageError;
   }
 
@@ -234,7 +239,7 @@ int main(int argc, char** argv) {
       if (!new_events.empty() || match.frame() % kFramesPerSecond == 0)
         record(transport::kGameChannel, transport::to_msg(match.game(), match.utime()));
       for (sim::MatchEvent& event : new_events) events.push_back(std::move(event));
-      if (!quiet && match.frame() % (10 * kFramesPerSecond) == 0) print_progress(match, wall_s());
+      if (!quiet && match.frame() % (10 * kFramesPerSecond) == 0) log_progress(*log, match, wall_s());
     }
     for (sim::MatchEvent& event : match.take_events()) {
       record(transport::kEventChannel, transport::to_msg(event));
@@ -256,7 +261,7 @@ int main(int argc, char** argv) {
       apps::write_summary_json(summary_path, match, summary, seed, apps::InProcessExtras{std::move(events), play->world_wall_s(), process_cpu_s() - start_cpu_s});
     return summary.interrupted ? 128 + g_stop_signal : 0;
   } catch (const std::exception& e) {
-    std::cerr << "touchline_match: " << e.what() << "\n";
+    log->error("{}", e.what());
     return 1;
   }
 }

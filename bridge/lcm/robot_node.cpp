@@ -3,7 +3,7 @@
 #include <unistd.h>
 
 #include <atomic>
-#include <ostream>
+#include <spdlog/logger.h>
 #include <random>
 
 #include "touchline/game_state_t.hpp"
@@ -29,10 +29,9 @@ int64_t random_instance() {
 
 class RobotNode::Impl {
  public:
-  Impl(robot::Robot& robot, const RobotNodeDef& def, Bus& bus, std::ostream& log)
+  Impl(robot::Robot& robot, const RobotNodeDef& def, Bus& bus, spdlog::logger& log)
       : robot_(robot), def_(def), log_(log), bus_(bus),
-        act_channel_(act_channel(robot.id())), snapshot_channel_(snapshot_channel(robot.id())),
-        name_("robot_shim " + std::to_string(robot.id().team) + "/" + std::to_string(robot.id().player)) {
+        act_channel_(act_channel(robot.id())), snapshot_channel_(snapshot_channel(robot.id())) {
     instance_ = def.instance ? def.instance : random_instance();
     bus_.subscribe(kJoinReplyChannel, [this](const BusMessage& m) { on_join_reply(m); });
     bus_.subscribe(kSenseChannel, [this](const BusMessage& m) { on_sense(m); });
@@ -60,7 +59,7 @@ class RobotNode::Impl {
       if (g_stop) return RobotExit::kInterrupted;
       bus_.handle(200);
       if (wall_us() - last_heard_us_ > static_cast<int64_t>(def_.world_timeout_s * 1e6)) {
-        log_ << name_ << ": sim_world silent for " << def_.world_timeout_s << " s, giving up\n" << std::flush;
+        log_.error("sim_world silent for {} s, giving up", def_.world_timeout_s);
         return RobotExit::kNoWorld;
       }
     }
@@ -81,7 +80,7 @@ class RobotNode::Impl {
       }
       const int64_t now = wall_us();
       if (now >= deadline) {
-        log_ << name_ << ": no sim_world accepted the join within " << def_.join_timeout_s << " s\n" << std::flush;
+        log_.error("no sim_world accepted the join within {} s", def_.join_timeout_s);
         exit_ = RobotExit::kNoWorld;
         break;
       }
@@ -100,7 +99,7 @@ class RobotNode::Impl {
     if (msg.accepted) {
       joined_ = true;
     } else {
-      log_ << name_ << ": sim_world refused to let us play: " << msg.reason << "\n" << std::flush;
+      log_.error("sim_world refused to let us play: {}", msg.reason);
       exit_ = RobotExit::kRejected;
     }
   }
@@ -156,19 +155,18 @@ class RobotNode::Impl {
   }
 
   void report_malformed(const std::string& what) {
-    if (malformed_++ < kMaxReports) log_ << name_ << ": ignored malformed message: " << what << "\n" << std::flush;
+    if (malformed_++ < kMaxReports) log_.warn("ignored malformed message: {}", what);
   }
 
   robot::Robot& robot_;
   const RobotNodeDef& def_;
-  std::ostream& log_;
+  spdlog::logger& log_;
 
   Bus& bus_;
   std::vector<uint8_t> last_act_; ///< the last answer as sent, for a repeated frame
   std::string act_channel_;
   std::string snapshot_channel_;
   int64_t behaviour_ticks_ = 0;
-  std::string name_;
   int64_t instance_ = 0;
   bool joined_ = false;
   RobotExit exit_ = kPlaying;
@@ -177,7 +175,7 @@ class RobotNode::Impl {
   int64_t malformed_ = 0;
 };
 
-RobotNode::RobotNode(robot::Robot& robot, const RobotNodeDef& def, Bus& bus, std::ostream& log)
+RobotNode::RobotNode(robot::Robot& robot, const RobotNodeDef& def, Bus& bus, spdlog::logger& log)
     : impl_(std::make_unique<Impl>(robot, def, bus, log)) {}
 RobotNode::~RobotNode() = default;
 RobotExit RobotNode::run() { return impl_->run(); }
@@ -187,12 +185,11 @@ bool RobotNode::match_over() const { return impl_->match_over(); }
 
 void request_robot_stop() { g_stop = true; }
 
-RobotExit run_robot(robot::Robot& robot, const RobotNodeDef& def, std::ostream& log) {
+RobotExit run_robot(robot::Robot& robot, const RobotNodeDef& def, spdlog::logger& log) {
   g_stop = false;
   int64_t reports = 0;
-  const std::string name = "robot_shim " + std::to_string(robot.id().team) + "/" + std::to_string(robot.id().player);
   Bus bus(def.lcm_url, def.key, [&](const std::string& what) {
-    if (reports++ < kMaxReports) log << name << ": ignored malformed message: " << what << "\n" << std::flush;
+    if (reports++ < kMaxReports) log.warn("ignored malformed message: {}", what);
   });
   RobotNode node(robot, def, bus, log);
   return node.run();

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
-#include <ostream>
+#include <spdlog/logger.h>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -42,7 +42,7 @@ std::string describe(const sim::MatchEvent& event) {
 
 class WorldNode {
  public:
-  WorldNode(sim::Match& match, const WorldNodeDef& def, Bus& bus, std::ostream& log)
+  WorldNode(sim::Match& match, const WorldNodeDef& def, Bus& bus, spdlog::logger& log)
       : match_(match), def_(def), log_(log), bus_(bus) {
     bus_.subscribe(kJoinChannel, [this](const BusMessage& m) { on_join(m); });
     bus_.subscribe(kActChannelPattern, [this](const BusMessage& m) { on_act(m); });
@@ -60,13 +60,13 @@ class WorldNode {
       GameInfo waiting; // robots stand in INITIAL until the GameController says otherwise
       waiting.state = GameState::kInitial;
       match_.set_external_game(waiting, {});
-      log_ << "sim_world: taking the game from GameController packets on " << def_.gamecontroller->address << ":"
-           << gamecontroller_->port() << "\n" << std::flush;
+      log_.info("taking the game from GameController packets on {}:{}", def_.gamecontroller->address,
+                gamecontroller_->port());
     }
     match_.start();
     publish_match_config();
     publish_game_state(false); // the tools and robots learn the state at once
-    log_ << "sim_world: kick-off with " << match_.active_robots().size() << " robots\n" << std::flush;
+    log_.info("kick-off with {} robots", match_.active_robots().size());
     const int64_t start_us = wall_us();
     while (!match_.finished() && !g_stop) {
       run_frame(start_us);
@@ -117,8 +117,7 @@ class WorldNode {
         if (packet->penalties[static_cast<size_t>(team)][static_cast<size_t>(player - 1)].penalised)
           penalised.insert({team, player});
     if (match_.game().state != packet->game.state || !gamecontroller_seen_)
-      log_ << "sim_world: GameController says " << to_string(packet->game.state)
-           << " (packet " << packet->packet_number << ")\n" << std::flush;
+      log_.info("GameController says {} (packet {})", to_string(packet->game.state), packet->packet_number);
     gamecontroller_seen_ = true;
     match_.set_external_game(packet->game, penalised);
   }
@@ -145,8 +144,7 @@ class WorldNode {
     if (def_.progress && match_.frame() % (10 * kFramesPerSecond) == 0) {
       const double sim_s = static_cast<double>(match_.utime()) * 1e-6;
       const double wall_s = static_cast<double>(wall_us() - start_us) * 1e-6;
-      log_ << "sim_world: " << std::fixed << std::setprecision(0) << sim_s << " s simulated, x"
-           << std::setprecision(1) << sim_s / std::max(wall_s, 1e-9) << " real time\n" << std::flush;
+      log_.info("{:.0f} s simulated, x{:.1f} real time", sim_s, sim_s / std::max(wall_s, 1e-9));
     }
   }
 
@@ -222,7 +220,7 @@ class WorldNode {
     publish(kJoinReplyChannel, out);
     if (!reply.accepted) {
       if (rejected_.insert(msg.instance).second)
-        log_ << "sim_world: refused a robot_shim (pid " << msg.pid << "): " << reply.reason << "\n" << std::flush;
+        log_.warn("refused a robot_shim (pid {}): {}", msg.pid, reply.reason);
     } else if (joined_.insert(msg.instance).second) {
       report(id, robot_status_t::JOINED, "joined (pid " + std::to_string(msg.pid) + ")");
     }
@@ -265,18 +263,18 @@ class WorldNode {
         break;
       case sim::ActOutcome::kUnknown:
         if (unknown_.insert(msg.instance).second)
-          log_ << "sim_world: ignoring answers from a " << sim::describe(act.id)
-               << " that has not joined (instance " << msg.instance << ")\n" << std::flush;
+          log_.warn("ignoring answers from a {} that has not joined (instance {})", sim::describe(act.id),
+                    msg.instance);
         break;
     }
   }
 
   void malformed(const std::string& what) {
-    if (summary_.malformed++ < kMaxReports) log_ << "sim_world: ignored malformed message: " << what << "\n" << std::flush;
+    if (summary_.malformed++ < kMaxReports) log_.warn("ignored malformed message: {}", what);
   }
 
   void report(RobotId id, int8_t state, const std::string& detail) {
-    log_ << "sim_world: " << sim::describe(id) << " " << detail << "\n" << std::flush;
+    log_.info("{} {}", sim::describe(id), detail);
     publish_status(id, state, detail);
   }
 
@@ -313,7 +311,7 @@ class WorldNode {
     const std::vector<sim::MatchEvent> events = match_.take_events();
     for (const sim::MatchEvent& event : events) {
       publish(kEventChannel, to_msg(event));
-      if (def_.progress) log_ << "sim_world: " << describe(event) << "\n" << std::flush;
+      if (def_.progress) log_.info("{}", describe(event));
     }
     if (!events.empty()) publish_game_state(false); // the game changed: tell the robots and tools at once
   }
@@ -324,7 +322,7 @@ class WorldNode {
 
   sim::Match& match_;
   const WorldNodeDef& def_;
-  std::ostream& log_;
+  spdlog::logger& log_;
   Bus& bus_;
   sim::FrameBarrier barrier_;
   std::unique_ptr<MatchRecorder> recorder_;
@@ -339,16 +337,16 @@ class WorldNode {
 
 void request_stop() { g_stop = true; }
 
-RunSummary run_world(sim::Match& match, const WorldNodeDef& def, Bus& bus, std::ostream& log) {
+RunSummary run_world(sim::Match& match, const WorldNodeDef& def, Bus& bus, spdlog::logger& log) {
   g_stop = false;
   WorldNode node(match, def, bus, log);
   return node.run();
 }
 
-RunSummary run_world(sim::Match& match, const WorldNodeDef& def, std::ostream& log) {
+RunSummary run_world(sim::Match& match, const WorldNodeDef& def, spdlog::logger& log) {
   int64_t reports = 0; // a message the bus refused (no valid tag) or whose handler failed
   Bus bus(def.lcm_url, def.key, [&](const std::string& what) {
-    if (reports++ < kMaxReports) log << "sim_world: " << what << "\n" << std::flush;
+    if (reports++ < kMaxReports) log.warn("{}", what);
   });
   return run_world(match, def, bus, log);
 }

@@ -25,6 +25,7 @@ def expect_usage_error(result, message):
 
 @pytest.mark.parametrize("args, message", [
     (["--mode", "bogus"], "--mode must be lockstep, realtime or free (got 'bogus')"),
+    (["--log-level", "loud"], "--log-level loud: not a level (trace, debug, info, warning, error, off)"),
     (["--robots", "9"], "--robots must be 1..8"),
     (["--robots", "-3"], "--robots must be an integer in [1, 14] (got '-3')"),
     (["--speed", "0"], "--speed must be a number in [0.01, 1000] (got '0')"),
@@ -68,6 +69,7 @@ SHIM = ["--team", "0", "--player", "1"]
 @pytest.mark.parametrize("args, message", [
     (["--player", "1"], "--team"),
     (["--team", "2", "--player", "1"], "--team must be an integer in [0, 1] (got '2')"),
+    (["--team", "0", "--player", "1", "--log-level", "loud"], "--log-level loud: not a level ("),
     (["--team", "-1", "--player", "1"], "--team must be an integer in [0, 1] (got '-1')"),
     (["--team", "0", "--player", "8"], "--player must be an integer in [1, 7] (got '8')"),
     (["--team", "0", "--player", "99999999999"], "--player must be an integer in [1, 7]"),
@@ -141,7 +143,8 @@ def test_check_modes_judge_a_match_without_playing_it():
     result = run(SIM_WORLD, "--check", "--config", ROOT / "config" / "spl2020.ini", "--set", "rules.half_s=300",
                  "--set", "rules.standby_s=10")
     assert result.returncode == 0, result.stderr
-    assert json.loads(result.stdout) == {"planned_s": 722, "goal_stoppage_s": 50, "duration_s": 3600, "team_size": 5}
+    assert json.loads(result.stdout) == {"planned_s": 722, "goal_stoppage_s": 50, "duration_s": 3600, "team_size": 5,
+                                         "field_length_mm": 9000, "field_width_mm": 6000}
     assert json.loads(run(SIM_WORLD, "--check", "--duration", 60).stdout)["planned_s"] == 60
     assert json.loads(run(SIM_WORLD, "--check", "--set", "rules.referee=false").stdout)["planned_s"] == 3600
     expect_usage_error(run(SIM_WORLD, "--check", "--set", "rules.nosuch=1"),

@@ -4,6 +4,7 @@ same seed, same truth hash and the same referee's events, for C++, Python and mi
 Bad options are one line and exit code 2. Runs in a private network namespace (tools/netns)
 for the lockstep runs it compares with."""
 import json
+import re
 import os
 import shutil
 import subprocess
@@ -77,6 +78,7 @@ def run(*args):
 
 @pytest.mark.parametrize("args, message", [
     (["--", "--team", "0", "--player", "8"], "robot 1: --player must be an integer in [1, 7] (got '8')"),
+    (["--log-level", "loud", "--", *ROBOT], "--log-level loud: not a level ("),
     (["--", *ROBOT, "--", "--team", "1", "--player", "1", "--behaviour", "nope"], "unknown behaviour 'nope'"),
     (["--", *ROBOT, "--behaviour", "goto", "--param", "x=abc"], "parameter x must be a number"),
     (["--", *ROBOT, "--frobnicate"], "robot 1: unrecognised option '--frobnicate'"),
@@ -97,6 +99,20 @@ def test_bad_options_are_one_line(args, message):
     assert result.returncode == 2, (result.returncode, result.stderr)
     lines = result.stderr.strip().splitlines()
     assert len(lines) == 1 and message in lines[0], result.stderr
+
+
+def test_the_log_level_chooses_the_lines():
+    """Progress lines (every 10 simulated seconds) are information: --log-level warning keeps
+    only what went wrong, and the match is the same."""
+    said = {level: run("--duration", 20, "--log-level", level, "--", *ROBOT, "--behaviour", "stand")
+            for level in ("info", "warning")}
+    assert all(r.returncode == 0 for r in said.values()), {k: r.stderr for k, r in said.items()}
+    progress = [re.fullmatch(r"touchline_match: (\d+) s simulated, x[\d.]+ real time", line)
+                for line in said["info"].stderr.splitlines()]
+    assert all(progress) and [int(m.group(1)) for m in progress] == [10, 20], said["info"].stderr
+    assert said["warning"].stderr == ""
+    hashes = {level: re.search(r"truth hash (\w+)", r.stdout).group(1) for level, r in said.items()}
+    assert hashes["info"] == hashes["warning"]
 
 
 def test_print_match_is_the_config_after_every_set():

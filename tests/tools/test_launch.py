@@ -101,7 +101,7 @@ def test_the_launcher_offers_every_robot_shim_option_a_match_needs():
                                timeout=30).stdout
     shim_options = set(re.findall(r"^\s+(--[a-z-]+)", shim_help, re.M))
     set_by_launcher = {"--team", "--player", "--behaviour", "--behaviour-plugin", "--param", "--walk-config",
-                       "--walk-engine", "--field-config", "--lcm-url", "--data-dir"}
+                       "--walk-engine", "--field-config", "--lcm-url", "--data-dir", "--log-level"}
     by_hand_only = {"--help", "--version", "--check", "--secret-file", "--join-timeout", "--world-timeout"}
     offered = {option for option, _ in SHIM_OPTIONS}
     assert shim_options - set_by_launcher - by_hand_only == offered, "robot_shim and tools/match drifted apart"

@@ -8,6 +8,9 @@
 #include <sstream>
 #include <vector>
 
+#include <spdlog/logger.h>
+#include <spdlog/sinks/ostream_sink.h>
+
 #include "touchline/lcm/bus.hpp"
 #include "touchline/lcm/robot_node.hpp"
 #include "touchline/lcm/world_node.hpp"
@@ -44,7 +47,8 @@ Played play(uint64_t seed, double duration_s) {
                                                         "match.duration_s=" + std::to_string(duration_s)});
   sim::Match match(config, seed);
   transport::Bus bus("memq://", transport::MatchKey::random());
-  std::ostringstream log;
+  std::ostringstream lines;
+  spdlog::logger log("world_node_test", std::make_shared<spdlog::sinks::ostream_sink_st>(lines));
 
   transport::WorldNodeDef world;
   world.robots = 2;
@@ -65,8 +69,8 @@ Played play(uint64_t seed, double duration_s) {
   }
   Played played{transport::run_world(match, world, bus, log), {}};
   for (const auto& node : nodes) played.over.push_back(node->match_over());
-  EXPECT_EQ(bus.counters().unauthenticated, 0) << log.str();
-  EXPECT_EQ(bus.counters().handler_failures, 0) << log.str();
+  EXPECT_EQ(bus.counters().unauthenticated, 0) << lines.str();
+  EXPECT_EQ(bus.counters().handler_failures, 0) << lines.str();
   return played;
 }
 

@@ -2,7 +2,7 @@
 // robot_shim's LCM adapter: joins the match as one robot, then answers every sense_t
 // frame with the act_t that the Robot computes. The robot code sees simulated time only.
 #include <cstdint>
-#include <iosfwd>
+#include <spdlog/fwd.h>
 #include <memory>
 #include <string>
 
@@ -35,7 +35,7 @@ enum class RobotExit {
 /// (the world's loop on a shared memq:// bus, in tests) the handlers alone play the robot.
 class RobotNode {
  public:
-  RobotNode(robot::Robot& robot, const RobotNodeDef& def, Bus& bus, std::ostream& log);
+  RobotNode(robot::Robot& robot, const RobotNodeDef& def, Bus& bus, spdlog::logger& log);
   ~RobotNode();
   /// Joins (asking again every 250 ms) and plays until the match is over.
   RobotExit run();
@@ -50,8 +50,9 @@ class RobotNode {
   std::unique_ptr<Impl> impl_;
 };
 
-/// Opens the bus at def.lcm_url and runs a RobotNode on it. Messages for the user go to `log`.
-RobotExit run_robot(robot::Robot& robot, const RobotNodeDef& def, std::ostream& log);
+/// Opens the bus at def.lcm_url and runs a RobotNode on it. Messages for the user go to `log`:
+/// why it gave up at error, malformed messages at warn.
+RobotExit run_robot(robot::Robot& robot, const RobotNodeDef& def, spdlog::logger& log);
 
 /// Asks a running run_robot to return (signal-safe).
 void request_robot_stop();

@@ -4,7 +4,7 @@
 // timeout; free: never waits, late answers apply late), steps the world and publishes
 // world truth, game state and robot status.
 #include <cstdint>
-#include <iosfwd>
+#include <spdlog/fwd.h>
 #include <optional>
 #include <string>
 
@@ -57,12 +57,12 @@ struct RunSummary {
 };
 
 /// Opens the bus at def.lcm_url and runs the match to its end. Messages for the user go to
-/// `log`, one line each. Throws std::runtime_error when the robots do not join in time or
+/// `log`: progress, joins and the GameController at info, refused or malformed messages at warn. Throws std::runtime_error when the robots do not join in time or
 /// LCM fails.
-RunSummary run_world(sim::Match& match, const WorldNodeDef& def, std::ostream& log);
+RunSummary run_world(sim::Match& match, const WorldNodeDef& def, spdlog::logger& log);
 /// The same on a bus someone else opened (e.g. memq:// shared with RobotNodes in one
 /// process: this loop then dispatches their messages too). def.lcm_url and def.key are unused.
-RunSummary run_world(sim::Match& match, const WorldNodeDef& def, Bus& bus, std::ostream& log);
+RunSummary run_world(sim::Match& match, const WorldNodeDef& def, Bus& bus, spdlog::logger& log);
 
 /// 16 lowercase hex digits.
 std::string hex_hash(uint64_t value);
