@@ -4,7 +4,9 @@
 #include <openssl/crypto.h>
 #include <openssl/evp.h>
 #include <openssl/hmac.h>
+#include <poll.h>
 
+#include <cerrno>
 #include <stdexcept>
 
 namespace touchline::transport {
@@ -12,31 +14,55 @@ namespace touchline::transport {
 struct Bus::Subscription {
   Bus* bus = nullptr;
   Handler handler;
+  lcm_t* lcm = nullptr;
   lcm_subscription_t* c_subscription = nullptr;
 };
 
-Bus::Bus(const std::string& url, MatchKey key, Reporter report)
-    : key_(std::move(key)), report_(std::move(report)), lcm_(lcm_create(url.c_str())) {
-  if (!lcm_)
+namespace {
+
+lcm_t* open_lcm(const std::string& url) {
+  lcm_t* lcm = lcm_create(url.c_str());
+  if (!lcm)
     throw std::runtime_error("cannot open LCM at " + url + " (is a multicast route on lo? see README, Networking)");
+  return lcm;
+}
+
+} // namespace
+
+Bus::Bus(const std::string& url, MatchKey key, Reporter report)
+    : key_(std::move(key)), report_(std::move(report)), urls_(lane_urls(url)), match_(open_lcm(urls_.match)) {
+  if (!urls_.split()) {
+    uplink_ = match_;
+    return;
+  }
+  try {
+    uplink_ = open_lcm(urls_.uplink);
+  } catch (...) {
+    lcm_destroy(match_);
+    throw;
+  }
 }
 
 Bus::~Bus() {
   // The subscriptions' C callbacks point into this object: unsubscribe before freeing.
-  for (auto& subscription : subscriptions_) lcm_unsubscribe(lcm_, subscription->c_subscription);
-  lcm_destroy(lcm_);
+  for (auto& subscription : subscriptions_) lcm_unsubscribe(subscription->lcm, subscription->c_subscription);
+  if (uplink_ != match_) lcm_destroy(uplink_);
+  lcm_destroy(match_);
 }
 
 void Bus::subscribe(const std::string& channel_regex, Handler handler) {
+  const Lane on = lane_of(channel_regex);
   auto subscription = std::make_unique<Subscription>();
   subscription->bus = this;
   subscription->handler = std::move(handler);
+  subscription->lcm = lane(on);
   subscription->c_subscription = lcm_subscribe(
-      lcm_, channel_regex.c_str(),
+      subscription->lcm, channel_regex.c_str(),
       [](const lcm_recv_buf_t* rbuf, const char* channel, void* user) { on_message(rbuf, channel, user); },
       subscription.get());
   if (!subscription->c_subscription) throw std::runtime_error("cannot subscribe to " + channel_regex);
   subscriptions_.push_back(std::move(subscription));
+  (on == Lane::kUplink && urls_.split() ? hears_uplink_ : hears_match_) = true;
 }
 
 void Bus::on_message(const void* rbuf, const char* channel, void* user) {
@@ -102,14 +128,30 @@ std::vector<uint8_t> Bus::publish(const std::string& channel, const uint8_t* pay
 }
 
 void Bus::publish_sealed(const std::string& channel, const std::vector<uint8_t>& wire) {
-  if (lcm_publish(lcm_, channel.c_str(), wire.data(), static_cast<unsigned>(wire.size())) != 0)
+  if (lcm_publish(lane(lane_of(channel)), channel.c_str(), wire.data(), static_cast<unsigned>(wire.size())) != 0)
     throw std::runtime_error("cannot send on " + channel + " (" + std::to_string(wire.size()) + " bytes)");
 }
 
 bool Bus::handle(int timeout_ms) {
-  const int status = lcm_handle_timeout(lcm_, timeout_ms);
-  if (status < 0) throw std::runtime_error("LCM failed while receiving");
-  return status > 0;
+  if (!(hears_match_ && hears_uplink_)) {
+    // One lane heard (or none yet: the match lane, as a bus of one URL always did). LCM
+    // waits on it itself.
+    const int status = lcm_handle_timeout(hears_uplink_ ? uplink_ : match_, timeout_ms);
+    if (status < 0) throw std::runtime_error("LCM failed while receiving");
+    return status > 0;
+  }
+  // Both lanes (a tool's or a test's bus): wait on both, dispatch what is waiting on each.
+  pollfd fds[2] = {{lcm_get_fileno(match_), POLLIN, 0}, {lcm_get_fileno(uplink_), POLLIN, 0}};
+  int ready = ::poll(fds, 2, timeout_ms);
+  while (ready < 0 && errno == EINTR) ready = ::poll(fds, 2, timeout_ms);
+  if (ready < 0) throw std::runtime_error("LCM failed while receiving");
+  bool handled = false;
+  for (int i = 0; i < 2; ++i) {
+    if (!(fds[i].revents & POLLIN)) continue;
+    if (lcm_handle(i == 0 ? match_ : uplink_) < 0) throw std::runtime_error("LCM failed while receiving");
+    handled = true;
+  }
+  return handled;
 }
 
 void Bus::drain() {

@@ -3,7 +3,7 @@ import math
 
 import pytest
 
-from touchline_harness import (LCM_URL, sealed, nominal_distance, robot_entry, start_robot, start_world,
+from touchline_harness import (LCM_URL, UPLINK_URL, sealed, nominal_distance, robot_entry, start_robot, start_world,
                                walk_def)
 from truth_listener import TruthListener
 
@@ -224,7 +224,7 @@ def test_malformed_messages_are_reported_and_ignored(tmp_path):
     match = start_world(tmp_path, 1, 3.0, "--mode", "realtime")
     start_robot(match, 0, 1, "walk", forward=100)
     match.world.wait_for_line("kick-off")
-    bus = lcm.LCM(LCM_URL)
+    bus = lcm.LCM(UPLINK_URL)  # where the world hears answers
     # Authenticated (made with the match's secret) but malformed: decoded, refused, counted.
     bus.publish("TL_ACT_0_1", sealed("TL_ACT_0_1", b"\x00garbage"))
     bad = act_t()
@@ -245,7 +245,7 @@ def test_messages_not_made_with_the_match_secret_are_dropped_unread(tmp_path):
     match = start_world(tmp_path, 1, 3.0, "--mode", "realtime")
     shim = start_robot(match, 0, 1, "walk", forward=100)
     match.world.wait_for_line("kick-off")
-    bus = lcm.LCM(LCM_URL)
+    bus, robots_hear = lcm.LCM(UPLINK_URL), lcm.LCM(LCM_URL)
     # A forger who has seen the traffic but not the secret: a valid act with no tag, one
     # with a tag made with another secret, a FINISHED for every robot, and a tag lifted
     # from another channel.
@@ -256,7 +256,7 @@ def test_messages_not_made_with_the_match_secret_are_dropped_unread(tmp_path):
     bus.publish("TL_ACT_0_1", sealed("TL_ACT_0_1", forged.encode(), secret_hex="ab" * 32))
     finished = game_state_t()
     finished.state = game_state_t.FINISHED
-    bus.publish("TL_GAME", sealed("TL_GAME", finished.encode(), secret_hex="cd" * 32))
+    robots_hear.publish("TL_GAME", sealed("TL_GAME", finished.encode(), secret_hex="cd" * 32))
     bus.publish("TL_ACT_0_1", sealed("TL_ACT_0_2", forged.encode()))
     match.world.wait_for_line("without a valid tag")
     summary = match.finish()
@@ -278,3 +278,35 @@ def test_realtime_mode_paces_and_free_mode_never_waits(tmp_path):
     summary = free.finish()
     assert summary["wall_s"] >= 2.0 / 10
     assert robot_entry(summary, 0, 1)["frames_answered"] > 0
+
+
+def test_robots_send_on_the_port_above_the_url_and_hear_only_the_worlds_port(tmp_path):
+    """The one --lcm-url gives two lanes (bridge/lcm lanes.hpp): the world publishes on the URL's
+    port; answers, joins and Blackboards go to the port above, which only the world joins, so
+    no robot is woken by another's answer. A listener on each port hears its own channels."""
+    import collections
+    import select
+    import time
+
+    import lcm
+
+    heard = {LCM_URL: collections.Counter(), UPLINK_URL: collections.Counter()}
+    buses = {url: lcm.LCM(url) for url in heard}
+    for url, bus in buses.items():
+        bus.subscribe(".*", lambda channel, data, url=url: heard[url].update([channel]))
+    match = start_world(tmp_path, 2, 3.0, "--mode", "realtime")
+    for player in (1, 2):
+        start_robot(match, 0, player, "walk", forward=100)
+    fds = {bus.fileno(): bus for bus in buses.values()}
+    deadline = time.monotonic() + 60
+    while match.world.popen.poll() is None and time.monotonic() < deadline:
+        for fd in select.select(list(fds), [], [], 0.05)[0]:
+            fds[fd].handle()
+    summary = match.finish()
+    world_port, robots_port = heard[LCM_URL], heard[UPLINK_URL]
+    assert world_port["TL_SENSE"] >= summary["frames"] and world_port["TL_TRUTH"] == summary["frames"]
+    assert {"TL_MATCH", "TL_GAME", "TL_STATUS", "TL_JOIN_REPLY"} <= world_port.keys(), world_port
+    assert robots_port["TL_ACT_0_1"] >= summary["frames"] and robots_port["TL_ACT_0_2"] >= summary["frames"]
+    assert {"TL_JOIN", "TL_BLACKBOARD_0_1"} <= robots_port.keys(), robots_port
+    assert not any(c.startswith(("TL_ACT_", "TL_BLACKBOARD_")) or c == "TL_JOIN" for c in world_port), world_port
+    assert not any(c.startswith(("TL_SENSE", "TL_TRUTH", "TL_GAME", "TL_STATUS", "TL_MATCH")) for c in robots_port)

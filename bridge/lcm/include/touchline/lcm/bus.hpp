@@ -18,6 +18,13 @@
 // Any `(p->object->*p->method)(...)` with a polymorphic `*p` does it, no LCM involved;
 // without vptr the same build is clean. So no member-function handlers via lcm::LCM here.
 //
+// A match's channels travel on two lanes (lanes.hpp): on a udpm URL, what robots send the
+// world goes to the port above the URL's, which only the world joins. The bus opens one LCM
+// instance per lane, routes each publish by its channel and each subscription by its
+// pattern, and waits on whichever lanes it subscribed to. An instance it only publishes on
+// never starts LCM's receive thread, so a robot is not woken by the other robots' answers,
+// nor the world by its own senses.
+//
 // Handlers never let an exception out: one that throws is counted and reported, and the
 // bus goes on (an exception must never unwind through liblcm's C frames).
 #include <cstdint>
@@ -26,6 +33,7 @@
 #include <string>
 #include <vector>
 
+#include "touchline/lcm/lanes.hpp"
 #include "touchline/lcm/match_key.hpp"
 
 typedef struct _lcm_t lcm_t;
@@ -57,13 +65,15 @@ class Bus {
   /// it prints).
   using Reporter = std::function<void(const std::string&)>;
 
-  /// Opens LCM at `url`. Throws std::runtime_error (one line) if LCM cannot.
+  /// Opens LCM at `url` (both lanes: lane_urls(url)). Throws std::runtime_error (one line)
+  /// if LCM cannot.
   Bus(const std::string& url, MatchKey key, Reporter report = {});
   ~Bus();
   Bus(const Bus&) = delete;
   Bus& operator=(const Bus&) = delete;
 
-  /// Calls `handler` for every authenticated message on channels matching `channel_regex`.
+  /// Calls `handler` for every authenticated message on channels matching `channel_regex`,
+  /// heard on the lane of the pattern (lane_of(channel_regex)).
   void subscribe(const std::string& channel_regex, Handler handler);
 
   /// Sends `payload` (an LCM encoding) with its tag; returns the bytes as sent.
@@ -80,13 +90,16 @@ class Bus {
   /// Sends again bytes that publish() returned (a repeat, as sent the first time).
   void publish_sealed(const std::string& channel, const std::vector<uint8_t>& wire);
 
-  /// Waits up to `timeout_ms` (0: not at all) for a message and dispatches what came.
+  /// Waits up to `timeout_ms` (0: not at all) for a message on any lane subscribed to and
+  /// dispatches what came.
   /// Returns whether one was handled. Throws std::runtime_error if LCM fails.
   bool handle(int timeout_ms);
   /// Dispatches every message already waiting, without waiting for more.
   void drain();
 
   const BusCounters& counters() const { return counters_; }
+  /// The URLs this bus opened, one per lane.
+  const LaneUrls& urls() const { return urls_; }
 
   /// `payload` followed by its tag for `channel` (what publish() sends).
   std::vector<uint8_t> seal(const std::string& channel, const uint8_t* payload, size_t size) const;
@@ -99,9 +112,15 @@ class Bus {
   void dispatch(Subscription& subscription, const std::string& channel, const uint8_t* wire, size_t size);
   void tag(const std::string& channel, const uint8_t* payload, size_t size, uint8_t* out) const;
 
+  lcm_t* lane(Lane lane) const { return lane == Lane::kUplink ? uplink_ : match_; }
+
   MatchKey key_;
   Reporter report_;
-  lcm_t* lcm_ = nullptr;
+  LaneUrls urls_;
+  lcm_t* match_ = nullptr;
+  lcm_t* uplink_ = nullptr;  ///< match_ itself when the URL has one lane
+  bool hears_match_ = false; ///< subscribed on the match lane (its receive thread runs)
+  bool hears_uplink_ = false;
   std::vector<std::unique_ptr<Subscription>> subscriptions_;
   BusCounters counters_;
 };
