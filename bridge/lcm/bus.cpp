@@ -7,18 +7,47 @@
 #include <poll.h>
 
 #include <cerrno>
+#include <optional>
+#include <regex>
 #include <stdexcept>
+
+#include "touchline/lcm/udpm_receiver.hpp"
 
 namespace touchline::transport {
 
-struct Bus::Subscription {
-  Bus* bus = nullptr;
-  Handler handler;
-  lcm_t* lcm = nullptr;
-  lcm_subscription_t* c_subscription = nullptr;
-};
-
 namespace {
+
+/// A subscription's channel pattern, matched as LCM matches it (the whole name against the
+/// regular expression), with the two forms the programs use taken without a regex.
+class ChannelPattern {
+ public:
+  explicit ChannelPattern(const std::string& pattern) : text_(pattern) {
+    const auto literal = [](const std::string& s) { return s.find_first_of(".[]{}()\\*+?|^$") == std::string::npos; };
+    if (literal(pattern)) {
+      kind_ = Kind::kExact;
+    } else if (pattern.size() >= 2 && pattern.compare(pattern.size() - 2, 2, ".*") == 0 &&
+               literal(pattern.substr(0, pattern.size() - 2))) {
+      kind_ = Kind::kPrefix;
+      text_.resize(pattern.size() - 2);
+    } else {
+      kind_ = Kind::kRegex;
+      regex_ = std::regex(pattern);
+    }
+  }
+  bool matches(const std::string& channel) const {
+    switch (kind_) {
+      case Kind::kExact: return channel == text_;
+      case Kind::kPrefix: return channel.compare(0, text_.size(), text_) == 0;
+      case Kind::kRegex: return std::regex_match(channel, regex_);
+    }
+    return false;
+  }
+
+ private:
+  enum class Kind { kExact, kPrefix, kRegex } kind_ = Kind::kExact;
+  std::string text_;
+  std::regex regex_;
+};
 
 lcm_t* open_lcm(const std::string& url) {
   lcm_t* lcm = lcm_create(url.c_str());
@@ -29,40 +58,69 @@ lcm_t* open_lcm(const std::string& url) {
 
 } // namespace
 
-Bus::Bus(const std::string& url, MatchKey key, Reporter report)
-    : key_(std::move(key)), report_(std::move(report)), urls_(lane_urls(url)), match_(open_lcm(urls_.match)) {
-  if (!urls_.split()) {
-    uplink_ = match_;
-    return;
+struct Bus::Subscription {
+  Bus* bus = nullptr;
+  Handler handler;
+  lcm_t* lcm = nullptr;                       ///< LCM dispatches it (a lane LCM reads) ...
+  lcm_subscription_t* c_subscription = nullptr;
+  std::optional<ChannelPattern> pattern;      ///< ... or the bus does (a lane it reads itself)
+};
+
+struct Bus::LaneState {
+  std::string url;
+  lcm_t* lcm = nullptr;
+  std::unique_ptr<UdpmReceiver> receiver;     ///< made on the first subscription, on udpm
+  std::vector<Subscription*> subscriptions;   ///< those the receiver's messages go to
+  bool hears = false;
+  ~LaneState() {
+    if (lcm) lcm_destroy(lcm);
   }
-  try {
-    uplink_ = open_lcm(urls_.uplink);
-  } catch (...) {
-    lcm_destroy(match_);
-    throw;
+};
+
+Bus::Bus(const std::string& url, MatchKey key, Reporter report)
+    : key_(std::move(key)), report_(std::move(report)), urls_(lane_urls(url)) {
+  for (const std::string& lane_url : urls_.split() ? std::vector<std::string>{urls_.match, urls_.uplink}
+                                                   : std::vector<std::string>{urls_.match}) {
+    auto lane = std::make_unique<LaneState>();
+    lane->url = lane_url;
+    lane->lcm = open_lcm(lane_url);
+    lanes_.push_back(std::move(lane));
   }
 }
 
 Bus::~Bus() {
   // The subscriptions' C callbacks point into this object: unsubscribe before freeing.
-  for (auto& subscription : subscriptions_) lcm_unsubscribe(subscription->lcm, subscription->c_subscription);
-  if (uplink_ != match_) lcm_destroy(uplink_);
-  lcm_destroy(match_);
+  for (auto& subscription : subscriptions_)
+    if (subscription->c_subscription) lcm_unsubscribe(subscription->lcm, subscription->c_subscription);
+}
+
+Bus::LaneState& Bus::lane(Lane lane) const {
+  return *lanes_[lane == Lane::kUplink && urls_.split() ? 1 : 0];
 }
 
 void Bus::subscribe(const std::string& channel_regex, Handler handler) {
-  const Lane on = lane_of(channel_regex);
+  LaneState& on = lane(lane_of(channel_regex));
   auto subscription = std::make_unique<Subscription>();
   subscription->bus = this;
   subscription->handler = std::move(handler);
-  subscription->lcm = lane(on);
-  subscription->c_subscription = lcm_subscribe(
-      subscription->lcm, channel_regex.c_str(),
-      [](const lcm_recv_buf_t* rbuf, const char* channel, void* user) { on_message(rbuf, channel, user); },
-      subscription.get());
-  if (!subscription->c_subscription) throw std::runtime_error("cannot subscribe to " + channel_regex);
+  if (is_udpm_url(on.url)) {
+    try {
+      subscription->pattern.emplace(channel_regex);
+    } catch (const std::regex_error&) {
+      throw std::runtime_error("cannot subscribe to " + channel_regex);
+    }
+    if (!on.receiver) on.receiver = std::make_unique<UdpmReceiver>(on.url);
+    on.subscriptions.push_back(subscription.get());
+  } else {
+    subscription->lcm = on.lcm;
+    subscription->c_subscription = lcm_subscribe(
+        on.lcm, channel_regex.c_str(),
+        [](const lcm_recv_buf_t* rbuf, const char* channel, void* user) { on_message(rbuf, channel, user); },
+        subscription.get());
+    if (!subscription->c_subscription) throw std::runtime_error("cannot subscribe to " + channel_regex);
+  }
+  on.hears = true;
   subscriptions_.push_back(std::move(subscription));
-  (on == Lane::kUplink && urls_.split() ? hears_uplink_ : hears_match_) = true;
 }
 
 void Bus::on_message(const void* rbuf, const char* channel, void* user) {
@@ -128,28 +186,51 @@ std::vector<uint8_t> Bus::publish(const std::string& channel, const uint8_t* pay
 }
 
 void Bus::publish_sealed(const std::string& channel, const std::vector<uint8_t>& wire) {
-  if (lcm_publish(lane(lane_of(channel)), channel.c_str(), wire.data(), static_cast<unsigned>(wire.size())) != 0)
+  if (lcm_publish(lane(lane_of(channel)).lcm, channel.c_str(), wire.data(), static_cast<unsigned>(wire.size())) != 0)
     throw std::runtime_error("cannot send on " + channel + " (" + std::to_string(wire.size()) + " bytes)");
 }
 
 bool Bus::handle(int timeout_ms) {
-  if (!(hears_match_ && hears_uplink_)) {
-    // One lane heard (or none yet: the match lane, as a bus of one URL always did). LCM
-    // waits on it itself.
-    const int status = lcm_handle_timeout(hears_uplink_ ? uplink_ : match_, timeout_ms);
-    if (status < 0) throw std::runtime_error("LCM failed while receiving");
-    return status > 0;
+  pollfd fds[2];
+  LaneState* heard[2];
+  nfds_t count = 0;
+  for (auto& lane : lanes_) {
+    if (!lane->hears) continue;
+    heard[count] = lane.get();
+    fds[count] = {lane->receiver ? lane->receiver->fd() : lcm_get_fileno(lane->lcm), POLLIN, 0};
+    if (fds[count].fd < 0) throw std::runtime_error("LCM failed while receiving");
+    ++count;
   }
-  // Both lanes (a tool's or a test's bus): wait on both, dispatch what is waiting on each.
-  pollfd fds[2] = {{lcm_get_fileno(match_), POLLIN, 0}, {lcm_get_fileno(uplink_), POLLIN, 0}};
-  int ready = ::poll(fds, 2, timeout_ms);
-  while (ready < 0 && errno == EINTR) ready = ::poll(fds, 2, timeout_ms);
+  int ready = ::poll(fds, count, timeout_ms);
+  while (ready < 0 && errno == EINTR) ready = ::poll(fds, count, timeout_ms);
   if (ready < 0) throw std::runtime_error("LCM failed while receiving");
   bool handled = false;
-  for (int i = 0; i < 2; ++i) {
+  for (nfds_t i = 0; i < count; ++i) {
     if (!(fds[i].revents & POLLIN)) continue;
-    if (lcm_handle(i == 0 ? match_ : uplink_) < 0) throw std::runtime_error("LCM failed while receiving");
-    handled = true;
+    if (heard[i]->receiver) {
+      handled = receive_all(*heard[i]) || handled;
+    } else {
+      if (lcm_handle(heard[i]->lcm) < 0) throw std::runtime_error("LCM failed while receiving");
+      handled = true;
+    }
+  }
+  return handled;
+}
+
+bool Bus::receive_all(LaneState& lane) {
+  bool handled = false;
+  UdpmReceiver::Message message{};
+  std::string channel;
+  // The subscriptions are those of this moment: a handler that subscribes adds to the vector.
+  const size_t subscriptions = lane.subscriptions.size();
+  while (lane.receiver->receive(message)) {
+    channel.assign(message.channel);
+    for (size_t i = 0; i < subscriptions; ++i) {
+      Subscription& subscription = *lane.subscriptions[i];
+      if (!subscription.pattern->matches(channel)) continue;
+      dispatch(subscription, channel, message.data, message.size);
+      handled = true;
+    }
   }
   return handled;
 }

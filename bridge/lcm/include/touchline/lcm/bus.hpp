@@ -20,10 +20,10 @@
 //
 // A match's channels travel on two lanes (lanes.hpp): on a udpm URL, what robots send the
 // world goes to the port above the URL's, which only the world joins. The bus opens one LCM
-// instance per lane, routes each publish by its channel and each subscription by its
-// pattern, and waits on whichever lanes it subscribed to. An instance it only publishes on
-// never starts LCM's receive thread, so a robot is not woken by the other robots' answers,
-// nor the world by its own senses.
+// instance per lane to send on, routes each publish by its channel and each subscription by
+// its pattern, and listens only on the lanes it subscribed to, so a robot is not woken by the
+// other robots' answers, nor the world by its own senses. A udpm lane is read in the caller's
+// thread (udpm_receiver.hpp), not by LCM's receive thread and its pipe.
 //
 // Handlers never let an exception out: one that throws is counted and reported, and the
 // bus goes on (an exception must never unwind through liblcm's C frames).
@@ -108,19 +108,20 @@ class Bus {
 
  private:
   struct Subscription;
+  /// One lane: the LCM instance it sends on and, once subscribed to, what it listens with
+  /// (a UdpmReceiver on a udpm URL, LCM itself on any other).
+  struct LaneState;
   static void on_message(const void* rbuf, const char* channel, void* user);
   void dispatch(Subscription& subscription, const std::string& channel, const uint8_t* wire, size_t size);
+  /// Dispatches every datagram waiting on a lane read with a UdpmReceiver.
+  bool receive_all(LaneState& lane);
   void tag(const std::string& channel, const uint8_t* payload, size_t size, uint8_t* out) const;
-
-  lcm_t* lane(Lane lane) const { return lane == Lane::kUplink ? uplink_ : match_; }
+  LaneState& lane(Lane lane) const;
 
   MatchKey key_;
   Reporter report_;
   LaneUrls urls_;
-  lcm_t* match_ = nullptr;
-  lcm_t* uplink_ = nullptr;  ///< match_ itself when the URL has one lane
-  bool hears_match_ = false; ///< subscribed on the match lane (its receive thread runs)
-  bool hears_uplink_ = false;
+  std::vector<std::unique_ptr<LaneState>> lanes_; ///< one, or two when urls_.split()
   std::vector<std::unique_ptr<Subscription>> subscriptions_;
   BusCounters counters_;
 };
