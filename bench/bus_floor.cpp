@@ -1,7 +1,7 @@
 // touchline_bench, part 1b: the round-trip floor over the match bus itself (bridge/lcm
-// bus.hpp), the transport lockstep runs on: the ping on the match URL's port, each pong on
-// the robots' port above it (lanes.hpp), every message tagged, each lane read in the
-// caller's thread. LCM's floor (lcm_floor.cpp) is the cap issue #14 states its goal
+// bus.hpp), the transport lockstep runs on: the ping sent as the sense is (on the robots'
+// port, then the match port), each pong on the answers' port (lanes.hpp), every message
+// tagged, each lane read in the caller's thread. LCM's floor (lcm_floor.cpp) is the cap issue #14 states its goal
 // against; this one says how much of the frame the bus leaves to the world and the robots.
 #include <sys/types.h>
 #include <sys/wait.h>
@@ -29,15 +29,15 @@ using transport::Bus;
 using transport::BusMessage;
 using transport::MatchKey;
 
-constexpr const char* kBusPing = "TLBENCH_PING";       // the match lane, as TL_SENSE
-constexpr const char* kBusStop = "TLBENCH_STOP";
+constexpr const char* kBusPing = "TL_SENSE";           // to the robots' lane and the match lane
+constexpr const char* kBusStop = "TL_GAME";            // as the end of a match
 constexpr const char* kBusPongPrefix = "TL_ACT_9_";    // the robots' lane, as an answer
 
 [[noreturn]] void bus_responder_main(const std::string& url, const MatchKey& key, int index, pid_t parent) {
   if (!die_with_parent(parent)) _exit(3);
   int code = 0;
   try {
-    Bus bus(url, key);
+    Bus bus(url, key, {}, transport::BusRole::kRobot);
     const std::string pong = kBusPongPrefix + std::to_string(index);
     bool stop = false;
     bus.subscribe(kBusPing, [&](const BusMessage& m) { bus.publish(pong, m.payload, m.payload_size); });

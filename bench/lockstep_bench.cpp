@@ -69,8 +69,8 @@ void print_report(const Options& opt, long nproc, const std::vector<FloorResult>
         << fixed(f.p90_us, 1) << std::setw(10) << fixed(f.min_us, 1) << std::setw(10) << fixed(f.max_us, 1)
         << std::setw(7) << f.lost_rounds << std::setw(12) << fixed(cap_rtf(f.median_us), 1) << "x real time\n";
 
-  out << "\nMatch-bus round-trip floor: the same over the transport lockstep runs on (ping on the match port,\n"
-         "pongs on the robots' port above it, tagged, read in the caller's thread; bridge/lcm bus.hpp)\n";
+  out << "\nMatch-bus round-trip floor: the same over the transport lockstep runs on (ping sent as the sense,\n"
+         "pongs on the answers' port, tagged, each read in the caller's thread; bridge/lcm bus.hpp)\n";
   for (const auto& f : bus_floors)
     out << std::setw(12) << f.responders << std::setw(12) << fixed(f.median_us, 1) << std::setw(10)
         << fixed(f.p90_us, 1) << std::setw(10) << fixed(f.min_us, 1) << std::setw(10) << fixed(f.max_us, 1)

@@ -11,9 +11,9 @@ programs take it) the spy checks every tag and counts the messages without a val
 channel ("forged"), decoding only the others; without it, it cannot tell a forged message
 from a real one, and says so.
 
-A match's one URL carries its messages on two ports (bridge/lcm/include/touchline/lcm/lanes.hpp):
-the world's on the URL's port, the robots' answers, joins and Blackboards on the port above;
-the spy listens to both.
+A match's one URL carries its messages on three ports (bridge/lcm/include/touchline/lcm/lanes.hpp):
+the world's on the URL's port, the robots' answers, joins and Blackboards on the port above,
+and copies of what the robots need on the next; the spy listens to the first two.
 
   tools/spy --text                    live, until Ctrl-C
   tools/spy --text --once             one snapshot after --duration seconds (default 2), then exit
@@ -47,8 +47,9 @@ GAME_STATES = {0: "INITIAL", 1: "READY", 2: "SET", 3: "PLAYING", 4: "FINISHED", 
 
 
 def lane_urls(url: str) -> list[str]:
-    """The URLs a match on `url` uses: for udpm://GROUP:PORT?OPTIONS also the robots' port above
-    it, as bridge/lcm lanes.cpp derives it; any other URL is the only one."""
+    """The URLs to watch a match on `url` by: for udpm://GROUP:PORT?OPTIONS also the robots' answers'
+    port above it, as bridge/lcm lanes.cpp derives it (the port above that only repeats what the
+    world sends on the first); any other URL is the only one."""
     if not url.startswith("udpm://"):
         return [url]
     network, _, options = url[len("udpm://"):].partition("?")
@@ -57,7 +58,7 @@ def lane_urls(url: str) -> list[str]:
         number = int(port, 0) if colon else 0
     except ValueError:
         return [url]
-    if not 1 <= number < 65535:
+    if not 1 <= number <= 65535 - 2:
         return [url]
     return [url, f"udpm://{group}:{number + 1}" + (f"?{options}" if options else "")]
 

@@ -77,9 +77,9 @@ struct Bus::LaneState {
   }
 };
 
-Bus::Bus(const std::string& url, MatchKey key, Reporter report)
-    : key_(std::move(key)), report_(std::move(report)), urls_(lane_urls(url)) {
-  for (const std::string& lane_url : urls_.split() ? std::vector<std::string>{urls_.match, urls_.uplink}
+Bus::Bus(const std::string& url, MatchKey key, Reporter report, BusRole role)
+    : key_(std::move(key)), report_(std::move(report)), urls_(lane_urls(url)), role_(role) {
+  for (const std::string& lane_url : urls_.split() ? std::vector<std::string>{urls_.match, urls_.uplink, urls_.robots}
                                                    : std::vector<std::string>{urls_.match}) {
     auto lane = std::make_unique<LaneState>();
     lane->url = lane_url;
@@ -95,11 +95,11 @@ Bus::~Bus() {
 }
 
 Bus::LaneState& Bus::lane(Lane lane) const {
-  return *lanes_[lane == Lane::kUplink && urls_.split() ? 1 : 0];
+  return *lanes_[urls_.split() ? static_cast<size_t>(lane) : 0];
 }
 
 void Bus::subscribe(const std::string& channel_regex, Handler handler) {
-  LaneState& on = lane(lane_of(channel_regex));
+  LaneState& on = lane(role_ == BusRole::kRobot && to_robots(channel_regex) ? Lane::kRobots : lane_of(channel_regex));
   auto subscription = std::make_unique<Subscription>();
   subscription->bus = this;
   subscription->handler = std::move(handler);
@@ -186,8 +186,12 @@ std::vector<uint8_t> Bus::publish(const std::string& channel, const uint8_t* pay
 }
 
 void Bus::publish_sealed(const std::string& channel, const std::vector<uint8_t>& wire) {
-  if (lcm_publish(lane(lane_of(channel)).lcm, channel.c_str(), wire.data(), static_cast<unsigned>(wire.size())) != 0)
-    throw std::runtime_error("cannot send on " + channel + " (" + std::to_string(wire.size()) + " bytes)");
+  const auto send = [&](Lane on) {
+    if (lcm_publish(lane(on).lcm, channel.c_str(), wire.data(), static_cast<unsigned>(wire.size())) != 0)
+      throw std::runtime_error("cannot send on " + channel + " (" + std::to_string(wire.size()) + " bytes)");
+  };
+  if (urls_.split() && to_robots(channel)) send(Lane::kRobots); // the robots first: they wait for it
+  send(lane_of(channel));
 }
 
 bool Bus::handle(int timeout_ms) {

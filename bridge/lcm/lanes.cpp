@@ -22,8 +22,12 @@ Lane lane_of(const std::string& channel) {
   return Lane::kMatch;
 }
 
+bool to_robots(const std::string& channel) {
+  return channel == "TL_SENSE" || channel == "TL_GAME" || channel == "TL_JOIN_REPLY";
+}
+
 LaneUrls lane_urls(const std::string& url) {
-  LaneUrls urls{url, url};
+  LaneUrls urls{url, url, url};
   if (!starts_with(url, kUdpm)) return urls;
   const size_t options_at = url.find('?');
   std::string network = url.substr(7, options_at == std::string::npos ? std::string::npos : options_at - 7);
@@ -35,8 +39,9 @@ LaneUrls lane_urls(const std::string& url) {
   const std::string port_text = network.substr(colon + 1);
   char* end = nullptr;
   const long port = std::strtol(port_text.c_str(), &end, 0);
-  if (end == port_text.c_str() || *end != '\0' || port < 1 || port >= 65535) return urls;
+  if (end == port_text.c_str() || *end != '\0' || port < 1 || port > 65535 - 2) return urls;
   urls.uplink = kUdpm + network.substr(0, colon) + ":" + std::to_string(port + 1) + options;
+  urls.robots = kUdpm + network.substr(0, colon) + ":" + std::to_string(port + 2) + options;
   return urls;
 }
 

@@ -95,9 +95,11 @@ std::optional<std::string> lcm_url_problem(const std::string& url) {
   if (auto problem = one_url_problem(url)) return problem;
   const LaneUrls lanes = lane_urls(url);
   if (url.rfind("udpm://", 0) == 0 && !lanes.split())
-    return "a udpm URL needs a port below 65535: the robots' answers go on the port above it (see README, Channels)";
+    return "a udpm URL needs a port below 65534: the robots use the two ports above it (see README, Which port "
+           "carries what)";
   if (!lanes.split()) return std::nullopt;
-  if (auto problem = one_url_problem(lanes.uplink)) return "the robots' port " + lanes.uplink + ": " + *problem;
+  for (const std::string& other : {lanes.uplink, lanes.robots})
+    if (auto problem = one_url_problem(other)) return "the robots' port " + other + ": " + *problem;
   return std::nullopt;
 }
 

@@ -191,9 +191,12 @@ RobotExit run_robot(robot::Robot& robot, const RobotNodeDef& def, std::ostream& 
   g_stop = false;
   int64_t reports = 0;
   const std::string name = "robot_shim " + std::to_string(robot.id().team) + "/" + std::to_string(robot.id().player);
-  Bus bus(def.lcm_url, def.key, [&](const std::string& what) {
-    if (reports++ < kMaxReports) log << name << ": ignored malformed message: " << what << "\n" << std::flush;
-  });
+  Bus bus(
+      def.lcm_url, def.key,
+      [&](const std::string& what) {
+        if (reports++ < kMaxReports) log << name << ": ignored malformed message: " << what << "\n" << std::flush;
+      },
+      BusRole::kRobot);
   RobotNode node(robot, def, bus, log);
   return node.run();
 }

@@ -92,5 +92,6 @@ def test_the_spy_derives_the_robots_port_as_the_programs_do():
     assert lane_urls("udpm://239.1.2.3:9000") == ["udpm://239.1.2.3:9000", "udpm://239.1.2.3:9001"]
     assert lane_urls("udpm://?ttl=0") == ["udpm://?ttl=0", "udpm://239.255.76.67:7668?ttl=0"]
     assert lane_urls("udpm://239.1.2.3:0x1000") == ["udpm://239.1.2.3:0x1000", "udpm://239.1.2.3:4097"]
-    for one in ("memq://", "tcpq://127.0.0.1:7700", "udpm://239.1.2.3:65535", "udpm://239.1.2.3:x"):
+    assert lane_urls("udpm://239.1.2.3:65533") == ["udpm://239.1.2.3:65533", "udpm://239.1.2.3:65534"]
+    for one in ("memq://", "tcpq://127.0.0.1:7700", "udpm://239.1.2.3:65534", "udpm://239.1.2.3:x"):
         assert lane_urls(one) == [one]

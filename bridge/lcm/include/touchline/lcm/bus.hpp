@@ -18,11 +18,13 @@
 // Any `(p->object->*p->method)(...)` with a polymorphic `*p` does it, no LCM involved;
 // without vptr the same build is clean. So no member-function handlers via lcm::LCM here.
 //
-// A match's channels travel on two lanes (lanes.hpp): on a udpm URL, what robots send the
-// world goes to the port above the URL's, which only the world joins. The bus opens one LCM
-// instance per lane to send on, routes each publish by its channel and each subscription by
-// its pattern, and listens only on the lanes it subscribed to, so a robot is not woken by the
-// other robots' answers, nor the world by its own senses. A udpm lane is read in the caller's
+// A match's channels travel on three lanes (lanes.hpp): on a udpm URL, what robots send the
+// world goes to the port above the URL's, which only the world joins, and what the robots
+// need from the world is copied to the port above that, the only one robots join. The bus
+// opens one LCM instance per lane to send on, routes each publish by its channel and each
+// subscription by its pattern and role, and listens only on the lanes it subscribed to, so
+// a robot is woken by neither the other robots' answers nor the truth, and the world not by
+// its own senses. A udpm lane is read in the caller's
 // thread (udpm_receiver.hpp), not by LCM's receive thread and its pipe.
 //
 // Handlers never let an exception out: one that throws is counted and reported, and the
@@ -58,6 +60,12 @@ struct BusCounters {
   int64_t handler_failures = 0; ///< handlers that threw: the message was dropped
 };
 
+/// Who listens on a bus, which decides where it hears what the world sends the robots.
+enum class BusRole {
+  kObserver, ///< the world, a tool or a test: the world's messages on the match lane
+  kRobot,    ///< a robot: TL_SENSE, TL_GAME, TL_JOIN_REPLY on the robots' lane (lanes.hpp)
+};
+
 class Bus {
  public:
   using Handler = std::function<void(const BusMessage&)>;
@@ -65,18 +73,20 @@ class Bus {
   /// it prints).
   using Reporter = std::function<void(const std::string&)>;
 
-  /// Opens LCM at `url` (both lanes: lane_urls(url)). Throws std::runtime_error (one line)
+  /// Opens LCM at `url` (every lane: lane_urls(url)). Throws std::runtime_error (one line)
   /// if LCM cannot.
-  Bus(const std::string& url, MatchKey key, Reporter report = {});
+  Bus(const std::string& url, MatchKey key, Reporter report = {}, BusRole role = BusRole::kObserver);
   ~Bus();
   Bus(const Bus&) = delete;
   Bus& operator=(const Bus&) = delete;
 
   /// Calls `handler` for every authenticated message on channels matching `channel_regex`,
-  /// heard on the lane of the pattern (lane_of(channel_regex)).
+  /// heard on the lane of the pattern (lane_of(channel_regex); for a robot, the robots' lane
+  /// for what to_robots() names).
   void subscribe(const std::string& channel_regex, Handler handler);
 
-  /// Sends `payload` (an LCM encoding) with its tag; returns the bytes as sent.
+  /// Sends `payload` (an LCM encoding) with its tag on its channel's lane (and what the
+  /// robots need on theirs first, then on the match lane); returns the bytes as sent.
   std::vector<uint8_t> publish(const std::string& channel, const uint8_t* payload, size_t size);
   /// Encodes `msg` and sends it; returns the bytes as sent (the encoding is all but the
   /// last kTagBytes).
@@ -121,7 +131,8 @@ class Bus {
   MatchKey key_;
   Reporter report_;
   LaneUrls urls_;
-  std::vector<std::unique_ptr<LaneState>> lanes_; ///< one, or two when urls_.split()
+  BusRole role_;
+  std::vector<std::unique_ptr<LaneState>> lanes_; ///< one, or three (Lane's order) when urls_.split()
   std::vector<std::unique_ptr<Subscription>> subscriptions_;
   BusCounters counters_;
 };
