@@ -73,6 +73,9 @@ void kill_and_reap(pid_t pid);
 
 /// Round trip from one ping to all `responders` pongs, over forked responder processes.
 FloorResult measure_floor(const Options& opt, int responders);
+/// The same round trip over the match bus (bus_floor.cpp): the ping on the match lane, the
+/// pongs on the robots' lane, tagged, each read in the caller's thread.
+FloorResult measure_bus_floor(const Options& opt, int responders);
 /// Real-time factor of sim_world + `robots` robot_shim processes in lockstep.
 /// What authenticating the bus costs per lockstep frame (auth_cost.cpp), microseconds.
 struct AuthCost {

@@ -3,6 +3,7 @@
 //
 //  1. LCM round-trip floor: N forked responder processes (own lcm::LCM each) answer every ping
 //     with its sequence number on their own pong channel; the parent times ping -> all N pongs.
+//     The same over the match bus (bus_floor.cpp): the transport's own floor.
 //  2. Lockstep real-time factor: sim_world plus N robot_shim processes walking for --duration
 //     simulated seconds; the RTF is read from sim_world's --summary JSON.
 //
@@ -56,13 +57,21 @@ std::string fixed(double x, int precision) {
 }
 
 void print_report(const Options& opt, long nproc, const std::vector<FloorResult>& floors,
-                  const std::vector<LockstepResult>& runs, const AuthCost& auth) {
+                  const std::vector<FloorResult>& bus_floors, const std::vector<LockstepResult>& runs,
+                  const AuthCost& auth) {
   std::ostream& out = std::cout;
   out << "\nTouchline lockstep benchmark  (" << nproc << " CPUs, " << opt.lcm_url << ")\n\n";
   out << "LCM round-trip floor: ping all responders, wait for every pong (" << opt.rounds << " rounds after "
       << opt.warmup << " warm-up)\n";
   out << "  responders   median us    p90 us    min us    max us   lost   cap at 1 exchange/frame\n";
   for (const auto& f : floors)
+    out << std::setw(12) << f.responders << std::setw(12) << fixed(f.median_us, 1) << std::setw(10)
+        << fixed(f.p90_us, 1) << std::setw(10) << fixed(f.min_us, 1) << std::setw(10) << fixed(f.max_us, 1)
+        << std::setw(7) << f.lost_rounds << std::setw(12) << fixed(cap_rtf(f.median_us), 1) << "x real time\n";
+
+  out << "\nMatch-bus round-trip floor: the same over the transport lockstep runs on (ping sent as the sense,\n"
+         "pongs on the answers' port, tagged, each read in the caller's thread; bridge/lcm bus.hpp)\n";
+  for (const auto& f : bus_floors)
     out << std::setw(12) << f.responders << std::setw(12) << fixed(f.median_us, 1) << std::setw(10)
         << fixed(f.p90_us, 1) << std::setw(10) << fixed(f.min_us, 1) << std::setw(10) << fixed(f.max_us, 1)
         << std::setw(7) << f.lost_rounds << std::setw(12) << fixed(cap_rtf(f.median_us), 1) << "x real time\n";
@@ -100,6 +109,12 @@ void print_report(const Options& opt, long nproc, const std::vector<FloorResult>
         out << "\n8 robots: RTF " << fixed(r.median_rtf, 1) << "x / LCM cap " << fixed(cap_rtf(f.median_us), 1)
             << "x measured in this run = " << fixed(r.median_rtf / cap_rtf(f.median_us), 2) << " of the cap (goal >= "
             << fixed(kCapRatioGoal, 2) << ")";
+  for (const auto& r : runs)
+    for (const auto& f : bus_floors)
+      if (r.robots == 8 && f.responders == 8)
+        out << "\n8 robots: RTF " << fixed(r.median_rtf, 1) << "x / match-bus cap " << fixed(cap_rtf(f.median_us), 1)
+            << "x measured in this run = " << fixed(r.median_rtf / cap_rtf(f.median_us), 2)
+            << " of the bus's own cap (the rest of the frame: world step, robot step, codec)";
   out << "\n\nBus authentication (HMAC-SHA-256 tag on every message), " << auth.robots << " robots, sense "
       << auth.sense_bytes << " B, answer " << auth.answer_bytes << " B:\n"
       << "  seal sense " << fixed(auth.seal_sense_us, 2) << " us, verify sense " << fixed(auth.verify_sense_us, 2)
@@ -115,7 +130,8 @@ void print_report(const Options& opt, long nproc, const std::vector<FloorResult>
 }
 
 void write_json(const std::string& path, const Options& opt, long nproc, const std::vector<FloorResult>& floors,
-                const std::vector<LockstepResult>& runs, const AuthCost& auth) {
+                const std::vector<FloorResult>& bus_floors, const std::vector<LockstepResult>& runs,
+                const AuthCost& auth) {
   std::ofstream out(path);
   if (!out) throw BenchError("cannot write " + path);
   out << std::setprecision(6) << "{\n";
@@ -141,6 +157,14 @@ void write_json(const std::string& path, const Options& opt, long nproc, const s
     out << "  \"lcm_floor_p90_us_" << n << "\": " << f.p90_us << ",\n";
     out << "  \"lcm_floor_lost_rounds_" << n << "\": " << f.lost_rounds << ",\n";
     out << "  \"lockstep_cap_rtf_" << n << "\": " << cap_rtf(f.median_us) << ",\n";
+  }
+  for (const auto& f : bus_floors) {
+    const std::string n = std::to_string(f.responders);
+    out << "  \"bus_floor_us_" << n << "\": " << f.median_us << ",\n";
+    out << "  \"bus_cap_rtf_" << n << "\": " << cap_rtf(f.median_us) << ",\n";
+    for (const auto& r : runs)
+      if (r.robots == f.responders && f.median_us > 0)
+        out << "  \"rtf_bus_cap_ratio_" << n << "\": " << r.median_rtf / cap_rtf(f.median_us) << ",\n";
   }
   std::string url;  // JSON-escape the URL (quotes and backslashes only; it is ASCII)
   for (char c : opt.lcm_url) {
@@ -261,6 +285,11 @@ int main(int argc, char** argv) {
       std::cerr << "touchline_bench: LCM round trip, " << n << " responder(s)...\n";
       floors.push_back(measure_floor(opt, n));
     }
+    std::vector<FloorResult> bus_floors;
+    for (int n : {1, 8}) {
+      std::cerr << "touchline_bench: match-bus round trip, " << n << " responder(s)...\n";
+      bus_floors.push_back(measure_bus_floor(opt, n));
+    }
     // Children's logs and sim_world summaries; kept when something fails (or with --keep-logs).
     std::string tmpl = (std::getenv("TMPDIR") ? std::string(std::getenv("TMPDIR")) : "/tmp") + "/touchline_bench.XXXXXX";
     if (mkdtemp(tmpl.data()) == nullptr) throw BenchError(std::string("mkdtemp failed: ") + std::strerror(errno));
@@ -272,9 +301,9 @@ int main(int argc, char** argv) {
       runs.push_back(measure_lockstep(opt, n, dir, run_timeout_s));
     }
     const AuthCost auth = measure_auth_cost(8, 20000);
-    print_report(opt, nproc, floors, runs, auth);
+    print_report(opt, nproc, floors, bus_floors, runs, auth);
     if (!opt.json_path.empty()) {
-      write_json(opt.json_path, opt, nproc, floors, runs, auth);
+      write_json(opt.json_path, opt, nproc, floors, bus_floors, runs, auth);
       std::cout << "wrote " << opt.json_path << "\n";
     }
     if (opt.keep_logs) {

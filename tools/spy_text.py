@@ -11,6 +11,10 @@ programs take it) the spy checks every tag and counts the messages without a val
 channel ("forged"), decoding only the others; without it, it cannot tell a forged message
 from a real one, and says so.
 
+A match's one URL carries its messages on three ports (bridge/lcm/include/touchline/lcm/lanes.hpp):
+the world's on the URL's port, the robots' answers, joins and Blackboards on the port above,
+and copies of what the robots need on the next; the spy listens to the first two.
+
   tools/spy --text                    live, until Ctrl-C
   tools/spy --text --once             one snapshot after --duration seconds (default 2), then exit
 """
@@ -40,6 +44,23 @@ TYPE_NAMES = ("act_t", "blackboard_snapshot_t", "game_state_t", "join_reply_t", 
               "match_event_t", "robot_status_t", "sense_t", "team_message_t", "world_truth_t")
 STATUS_NAMES = {1: "joined", 2: "active", 3: "timed out", 4: "rejoined", 5: "rejected"}
 GAME_STATES = {0: "INITIAL", 1: "READY", 2: "SET", 3: "PLAYING", 4: "FINISHED", 5: "STANDBY"}
+
+
+def lane_urls(url: str) -> list[str]:
+    """The URLs to watch a match on `url` by: for udpm://GROUP:PORT?OPTIONS also the robots' answers'
+    port above it, as bridge/lcm lanes.cpp derives it (the port above that only repeats what the
+    world sends on the first); any other URL is the only one."""
+    if not url.startswith("udpm://"):
+        return [url]
+    network, _, options = url[len("udpm://"):].partition("?")
+    group, colon, port = (network or "239.255.76.67:7667").partition(":")
+    try:
+        number = int(port, 0) if colon else 0
+    except ValueError:
+        return [url]
+    if not 1 <= number <= 65535 - 2:
+        return [url]
+    return [url, f"udpm://{group}:{number + 1}" + (f"?{options}" if options else "")]
 
 
 def load_types(build_dir: Path) -> dict:
@@ -108,17 +129,18 @@ class Spy:
         self.game = ""
         self.lock = threading.Lock()
         self.started = time.monotonic()
-        self.bus = lcm.LCM(url)
-        self.bus.subscribe(".*", self._on_message)
+        self.buses = [lcm.LCM(lane) for lane in lane_urls(url)]  # the world's port, then the robots'
+        for bus in self.buses:
+            bus.subscribe(".*", self._on_message)
         self._stop = threading.Event()
         self._thread = threading.Thread(target=self._run, name="spy", daemon=True)
         self._thread.start()
 
     def _run(self) -> None:
-        fd = self.bus.fileno()
+        buses = {bus.fileno(): bus for bus in self.buses}
         while not self._stop.is_set():
-            if select.select([fd], [], [], 0.1)[0]:
-                self.bus.handle()
+            for fd in select.select(list(buses), [], [], 0.1)[0]:
+                buses[fd].handle()
 
     def _on_message(self, channel: str, data: bytes) -> None:
         now = time.monotonic()

@@ -1,5 +1,7 @@
 #include "touchline/lcm/lcm_url.hpp"
 
+#include "touchline/lcm/lanes.hpp"
+
 #include <arpa/inet.h>
 #include <unistd.h>
 
@@ -70,7 +72,9 @@ std::string capturing_stderr(F open) {
 
 } // namespace
 
-std::optional<std::string> lcm_url_problem(const std::string& url) {
+namespace {
+
+std::optional<std::string> one_url_problem(const std::string& url) {
   if (auto problem = not_a_group(url)) return problem;
   bool opened = false;
   const std::string printed = capturing_stderr([&] {
@@ -83,6 +87,20 @@ std::optional<std::string> lcm_url_problem(const std::string& url) {
   // ("Invalid value for ttl"): a mistake all the same, and one that could widen the ttl.
   if (opened && printed.find("Warning") == std::string::npos) return std::nullopt;
   return reason_in(printed);
+}
+
+} // namespace
+
+std::optional<std::string> lcm_url_problem(const std::string& url) {
+  if (auto problem = one_url_problem(url)) return problem;
+  const LaneUrls lanes = lane_urls(url);
+  if (url.rfind("udpm://", 0) == 0 && !lanes.split())
+    return "a udpm URL needs a port below 65534: the robots use the two ports above it (see README, Which port "
+           "carries what)";
+  if (!lanes.split()) return std::nullopt;
+  for (const std::string& other : {lanes.uplink, lanes.robots})
+    if (auto problem = one_url_problem(other)) return "the robots' port " + other + ": " + *problem;
+  return std::nullopt;
 }
 
 } // namespace touchline::transport

@@ -188,9 +188,12 @@ void request_robot_stop() { g_stop = true; }
 RobotExit run_robot(robot::Robot& robot, const RobotNodeDef& def, spdlog::logger& log) {
   g_stop = false;
   int64_t reports = 0;
-  Bus bus(def.lcm_url, def.key, [&](const std::string& what) {
-    if (reports++ < kMaxReports) log.warn("ignored malformed message: {}", what);
-  });
+  Bus bus(
+      def.lcm_url, def.key,
+      [&](const std::string& what) {
+        if (reports++ < kMaxReports) log.warn("ignored malformed message: {}", what);
+      },
+      BusRole::kRobot);
   RobotNode node(robot, def, bus, log);
   return node.run();
 }

@@ -57,6 +57,8 @@ def expect_usage_error(result, message):
      "--lcm-url 'tcpq://127.0.0.1:1': cannot open LCM: lcm_tcpq connect: Connection refused"),
     (["--lcm-url", "bogus://x"], "cannot open LCM: LCM provider \"bogus\" not found"),
     (["--lcm-url", "udpm://239.255.76.67:7667?ttl=abc"], "cannot open LCM: Invalid value for ttl"),
+    # The robots use the two ports above the URL's (bridge/lcm lanes.hpp): 65534 has one.
+    (["--lcm-url", "udpm://239.255.76.67:65534?ttl=0"], "cannot open LCM: a udpm URL needs a port below 65534"),
     (["--frobnicate"], "unrecognised option '--frobnicate'"),
 ])
 def test_sim_world_rejects_bad_options(args, message):

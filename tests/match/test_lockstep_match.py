@@ -3,7 +3,7 @@ import math
 
 import pytest
 
-from touchline_harness import (LCM_URL, sealed, nominal_distance, robot_entry, start_robot, start_world,
+from touchline_harness import (LCM_URL, ROBOTS_URL, UPLINK_URL, sealed, nominal_distance, robot_entry, start_robot, start_world,
                                walk_def)
 from truth_listener import TruthListener
 
@@ -143,7 +143,7 @@ def test_a_sense_from_far_in_the_future_does_not_silence_a_shim(tmp_path):
     mine = robot_sense_t()
     mine.team, mine.player, mine.active = 0, 1, True
     forged.robots, forged.num_robots = [mine], 1
-    lcm.LCM(LCM_URL).publish("TL_SENSE", sealed("TL_SENSE", forged.encode()))
+    lcm.LCM(ROBOTS_URL).publish("TL_SENSE", sealed("TL_SENSE", forged.encode()))  # where robots hear it
     shim.wait_for_line("is not a frame of a match")
     summary = match.finish()
     assert robot_entry(summary, 0, 1)["frames_answered"] == summary["frames"] == 90
@@ -164,7 +164,7 @@ def lossy_loopback():
     import subprocess
     rules = ["add table inet touchline_loss",
              'add chain inet touchline_loss input { type filter hook input priority 0 ; }',
-             "add rule inet touchline_loss input udp dport 7667 numgen random mod 10 == 0 drop"]
+             "add rule inet touchline_loss input udp dport 7667-7669 numgen random mod 10 == 0 drop"]  # the 3 ports
     for rule in rules:
         subprocess.run(["nft", *rule.split()], check=True)
     yield
@@ -224,7 +224,7 @@ def test_malformed_messages_are_reported_and_ignored(tmp_path):
     match = start_world(tmp_path, 1, 3.0, "--mode", "realtime")
     start_robot(match, 0, 1, "walk", forward=100)
     match.world.wait_for_line("kick-off")
-    bus = lcm.LCM(LCM_URL)
+    bus = lcm.LCM(UPLINK_URL)  # where the world hears answers
     # Authenticated (made with the match's secret) but malformed: decoded, refused, counted.
     bus.publish("TL_ACT_0_1", sealed("TL_ACT_0_1", b"\x00garbage"))
     bad = act_t()
@@ -245,7 +245,7 @@ def test_messages_not_made_with_the_match_secret_are_dropped_unread(tmp_path):
     match = start_world(tmp_path, 1, 3.0, "--mode", "realtime")
     shim = start_robot(match, 0, 1, "walk", forward=100)
     match.world.wait_for_line("kick-off")
-    bus = lcm.LCM(LCM_URL)
+    bus, robots_hear = lcm.LCM(UPLINK_URL), lcm.LCM(ROBOTS_URL)
     # A forger who has seen the traffic but not the secret: a valid act with no tag, one
     # with a tag made with another secret, a FINISHED for every robot, and a tag lifted
     # from another channel.
@@ -256,7 +256,7 @@ def test_messages_not_made_with_the_match_secret_are_dropped_unread(tmp_path):
     bus.publish("TL_ACT_0_1", sealed("TL_ACT_0_1", forged.encode(), secret_hex="ab" * 32))
     finished = game_state_t()
     finished.state = game_state_t.FINISHED
-    bus.publish("TL_GAME", sealed("TL_GAME", finished.encode(), secret_hex="cd" * 32))
+    robots_hear.publish("TL_GAME", sealed("TL_GAME", finished.encode(), secret_hex="cd" * 32))
     bus.publish("TL_ACT_0_1", sealed("TL_ACT_0_2", forged.encode()))
     match.world.wait_for_line("without a valid tag")
     summary = match.finish()
@@ -278,3 +278,40 @@ def test_realtime_mode_paces_and_free_mode_never_waits(tmp_path):
     summary = free.finish()
     assert summary["wall_s"] >= 2.0 / 10
     assert robot_entry(summary, 0, 1)["frames_answered"] > 0
+
+
+def test_each_port_of_the_url_carries_its_own_channels(tmp_path):
+    """The one --lcm-url gives three ports (bridge/lcm lanes.hpp): the world publishes on the URL's
+    port; answers, joins and Blackboards go to the port above, which only the world joins; the
+    sense, the game and the join replies are copied to the port above that, the only one robots
+    join. So no robot is woken by another's answer or by the truth. A listener on each port
+    hears its own channels."""
+    import collections
+    import select
+    import time
+
+    import lcm
+
+    heard = {url: collections.Counter() for url in (LCM_URL, UPLINK_URL, ROBOTS_URL)}
+    buses = {url: lcm.LCM(url) for url in heard}
+    for url, bus in buses.items():
+        bus.subscribe("TL_.*", lambda channel, data, url=url: heard[url].update([channel]))  # not LCM_SELF_TEST
+    match = start_world(tmp_path, 2, 3.0, "--mode", "realtime")
+    for player in (1, 2):
+        start_robot(match, 0, player, "walk", forward=100)
+    fds = {bus.fileno(): bus for bus in buses.values()}
+    deadline = time.monotonic() + 60
+    while match.world.popen.poll() is None and time.monotonic() < deadline:
+        for fd in select.select(list(fds), [], [], 0.05)[0]:
+            fds[fd].handle()
+    summary = match.finish()
+    world_port, answers_port, robots_port = heard[LCM_URL], heard[UPLINK_URL], heard[ROBOTS_URL]
+    frames = summary["frames"]
+    assert world_port["TL_SENSE"] >= frames and world_port["TL_TRUTH"] == frames
+    assert {"TL_MATCH", "TL_GAME", "TL_STATUS", "TL_JOIN_REPLY"} <= world_port.keys(), world_port
+    assert answers_port["TL_ACT_0_1"] >= frames and answers_port["TL_ACT_0_2"] >= frames
+    assert set(answers_port) == {"TL_JOIN", "TL_ACT_0_1", "TL_ACT_0_2", "TL_BLACKBOARD_0_1", "TL_BLACKBOARD_0_2"}
+    assert set(robots_port) == {"TL_SENSE", "TL_GAME", "TL_JOIN_REPLY"}, robots_port
+    for channel in robots_port:
+        assert robots_port[channel] == world_port[channel], channel  # a copy of each, no more
+    assert not set(world_port) & set(answers_port), world_port

@@ -24,6 +24,10 @@ SIM_WORLD = BUILD / "bin" / "sim_world"
 ROBOT_SHIM = BUILD / "bin" / "robot_shim"
 WALK_INI = ROOT / "config" / "walk.ini"
 LCM_URL = "udpm://239.255.76.67:7667?ttl=0"
+# What robots send the world (answers, joins, Blackboards) goes to the port above; what they
+# hear (sense, game, join replies) is copied to the port above that (bridge/lcm lanes.hpp).
+UPLINK_URL = "udpm://239.255.76.67:7668?ttl=0"
+ROBOTS_URL = "udpm://239.255.76.67:7669?ttl=0"
 WAIT_S = 60  # the longest any step of a test waits before failing
 # Every program of a match authenticates its messages with one secret; the children inherit it.
 os.environ.setdefault("TOUCHLINE_MATCH_SECRET", secrets.token_hex(32))

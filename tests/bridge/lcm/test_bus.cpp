@@ -119,3 +119,17 @@ TEST(Bus, AnUnusableUrlIsOneLine) {
     EXPECT_NE(std::string(e.what()).find("cannot open LCM at nosuchprovider://"), std::string::npos) << e.what();
   }
 }
+
+TEST(Bus, OnAUrlOfOneLaneTheRobotsAnswersAndTheWorldsMessagesShareIt) {
+  // memq:// (as in every in-process test) has no port above it: both lanes are the one bus.
+  Bus bus("memq://", key_of('a'));
+  EXPECT_FALSE(bus.urls().split());
+  Received answers, senses;
+  listen(bus, "TL_ACT_.*", answers);
+  listen(bus, "TL_SENSE", senses);
+  bus.publish("TL_ACT_0_1", pose(1));
+  bus.publish("TL_SENSE", pose(2));
+  bus.drain();
+  EXPECT_EQ(answers.x_mm, std::vector<float>{1});
+  EXPECT_EQ(senses.x_mm, std::vector<float>{2});
+}

@@ -9,7 +9,8 @@
 
 namespace touchline::transport {
 
-/// nullopt when LCM opens `url` and has a descriptor to wait on; otherwise why not, in
+/// nullopt when LCM opens `url` (and, for udpm, the robots' port above it: lanes.hpp) and has
+/// a descriptor to wait on; otherwise why not, in
 /// one line: "not a multicast group address: 8.8.8.8 (udpm needs 224.0.0.0 to
 /// 239.255.255.255)", "no multicast route (on a machine without a network: ip route add
 /// 224.0.0.0/4 dev lo; see README, Networking)", "LCM provider \"bogus\" not found". What

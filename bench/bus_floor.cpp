@@ -1,0 +1,147 @@
+// touchline_bench, part 1b: the round-trip floor over the match bus itself (bridge/lcm
+// bus.hpp), the transport lockstep runs on: the ping sent as the sense is (on the robots'
+// port, then the match port), each pong on the answers' port (lanes.hpp), every message
+// tagged, each lane read in the caller's thread. LCM's floor (lcm_floor.cpp) is the cap issue #14 states its goal
+// against; this one says how much of the frame the bus leaves to the world and the robots.
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cstdint>
+#include <cstring>
+#include <iostream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "touchline/lcm/bus.hpp"
+
+#include "bench.hpp"
+
+namespace touchline::bench {
+
+namespace {
+
+using transport::Bus;
+using transport::BusMessage;
+using transport::MatchKey;
+
+constexpr const char* kBusPing = "TL_SENSE";           // to the robots' lane and the match lane
+constexpr const char* kBusStop = "TL_GAME";            // as the end of a match
+constexpr const char* kBusPongPrefix = "TL_ACT_9_";    // the robots' lane, as an answer
+
+[[noreturn]] void bus_responder_main(const std::string& url, const MatchKey& key, int index, pid_t parent) {
+  if (!die_with_parent(parent)) _exit(3);
+  int code = 0;
+  try {
+    Bus bus(url, key, {}, transport::BusRole::kRobot);
+    const std::string pong = kBusPongPrefix + std::to_string(index);
+    bool stop = false;
+    bus.subscribe(kBusPing, [&](const BusMessage& m) { bus.publish(pong, m.payload, m.payload_size); });
+    bus.subscribe(kBusStop, [&](const BusMessage&) { stop = true; });
+    while (!stop) bus.handle(200);
+  } catch (...) {
+    code = 5;
+  }
+  _exit(code);
+}
+
+} // namespace
+
+FloorResult measure_bus_floor(const Options& opt, int responders) {
+  std::cout << std::flush;
+  std::cerr << std::flush;
+  const MatchKey key = MatchKey::random();
+  const pid_t parent = getpid();
+  std::vector<pid_t> children;
+  const auto cleanup = [&] {
+    for (pid_t pid : children) kill_and_reap(pid);
+    children.clear();
+  };
+  for (int i = 0; i < responders; ++i) {
+    const pid_t pid = fork();
+    if (pid < 0) {
+      cleanup();
+      throw BenchError(std::string("fork failed: ") + std::strerror(errno));
+    }
+    if (pid == 0) bus_responder_main(opt.lcm_url, key, i, parent);
+    children.push_back(pid);
+  }
+  FloorResult result;
+  result.responders = responders;
+  try {
+    Bus bus(opt.lcm_url, key);
+    uint64_t seq = 0;
+    std::vector<bool> seen(static_cast<size_t>(responders));
+    int count = 0;
+    bus.subscribe(std::string(kBusPongPrefix) + ".*", [&](const BusMessage& m) {
+      uint64_t got = 0;
+      if (m.payload_size != sizeof got) return;
+      std::memcpy(&got, m.payload, sizeof got);
+      const size_t index = std::strtoul(m.channel.c_str() + std::strlen(kBusPongPrefix), nullptr, 10);
+      if (got != seq || index >= seen.size() || seen[index]) return;
+      seen[index] = true;
+      ++count;
+    });
+    const auto round = [&](int timeout_ms) {
+      ++seq;
+      std::fill(seen.begin(), seen.end(), false);
+      count = 0;
+      bus.publish(kBusPing, reinterpret_cast<const uint8_t*>(&seq), sizeof seq);
+      const auto deadline = Clock::now() + std::chrono::milliseconds(timeout_ms);
+      while (count < responders) {
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+        if (left <= 0) return false;
+        bus.handle(static_cast<int>(left));
+      }
+      return true;
+    };
+    const auto join_start = Clock::now();
+    while (!round(50))
+      if (seconds_since(join_start) > 10)
+        throw BenchError("bus responders never all answered a ping within 10 s");
+    std::vector<double> rtt_us;
+    for (int i = 0; i < opt.warmup + opt.rounds; ++i) {
+      const auto t0 = Clock::now();
+      const bool ok = round(1000);
+      const double us = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
+      if (!ok) {
+        if (++result.lost_rounds > std::max(10, (opt.warmup + opt.rounds) / 100))
+          throw BenchError("bus round trip: " + std::to_string(result.lost_rounds) + " rounds lost");
+        continue;
+      }
+      if (i >= opt.warmup) rtt_us.push_back(us);
+    }
+    if (rtt_us.empty()) throw BenchError("bus round trip: no round completed");
+    result.median_us = median(rtt_us);
+    result.p90_us = percentile(rtt_us, 0.9);
+    result.min_us = *std::min_element(rtt_us.begin(), rtt_us.end());
+    result.max_us = *std::max_element(rtt_us.begin(), rtt_us.end());
+    const uint8_t stop = 1;
+    const auto stop_start = Clock::now();
+    while (!children.empty() && seconds_since(stop_start) < 2) {
+      bus.publish(kBusStop, &stop, 1);
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      for (auto it = children.begin(); it != children.end();) {
+        int status = 0;
+        if (waitpid(*it, &status, WNOHANG) == *it) {
+          if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+            throw BenchError("bus responder (pid " + std::to_string(*it) + ") " + describe_status(status));
+          it = children.erase(it);
+        } else {
+          ++it;
+        }
+      }
+    }
+    if (!children.empty()) throw BenchError(std::to_string(children.size()) + " bus responder(s) ignored the stop");
+  } catch (...) {
+    cleanup();
+    throw;
+  }
+  return result;
+}
+
+} // namespace touchline::bench
