@@ -46,23 +46,6 @@ STATUS_NAMES = {1: "joined", 2: "active", 3: "timed out", 4: "rejoined", 5: "rej
 GAME_STATES = {0: "INITIAL", 1: "READY", 2: "SET", 3: "PLAYING", 4: "FINISHED", 5: "STANDBY"}
 
 
-def lane_urls(url: str) -> list[str]:
-    """The URLs to watch a match on `url` by: for udpm://GROUP:PORT?OPTIONS also the robots' answers'
-    port above it, as bridge/lcm lanes.cpp derives it (the port above that only repeats what the
-    world sends on the first); any other URL is the only one."""
-    if not url.startswith("udpm://"):
-        return [url]
-    network, _, options = url[len("udpm://"):].partition("?")
-    group, colon, port = (network or "239.255.76.67:7667").partition(":")
-    try:
-        number = int(port, 0) if colon else 0
-    except ValueError:
-        return [url]
-    if not 1 <= number <= 65535 - 2:
-        return [url]
-    return [url, f"udpm://{group}:{number + 1}" + (f"?{options}" if options else "")]
-
-
 def load_types(build_dir: Path) -> dict:
     """LCM fingerprint (8 bytes) -> generated type, for every Touchline type there is."""
     sys.path[:0] = touchline_paths.lcm_python_dirs(build_dir)
@@ -129,7 +112,7 @@ class Spy:
         self.game = ""
         self.lock = threading.Lock()
         self.started = time.monotonic()
-        self.buses = [lcm.LCM(lane) for lane in lane_urls(url)]  # the world's port, then the robots'
+        self.buses = [lcm.LCM(lane) for lane in touchline_paths.lane_urls(url)]  # the world's port, then the robots'
         for bus in self.buses:
             bus.subscribe(".*", self._on_message)
         self._stop = threading.Event()

@@ -1,5 +1,6 @@
-"""Where Touchline's files are, in the source tree or installed (`pip install .`, cmake --install):
-the one place the Python tools, the viewer and learning ask.
+"""Where Touchline's files are, in the source tree or installed (`pip install .`, cmake --install),
+and where a match's messages are (the ports of its LCM URL): the one place the Python tools, the
+viewer and learning ask.
 
 Reads only the file system. Two layouts:
 - the source tree: this file is tools/touchline_paths.py; the programs are in build/bin
@@ -78,3 +79,20 @@ def lcm_python_dirs(build: Path | None = None) -> list[str]:
 def version() -> str:
     """The VERSION file's version, the one every program's --version prints."""
     return (SHARE / "VERSION").read_text().strip()
+
+
+def lane_urls(url: str) -> list[str]:
+    """The URLs to watch a match on `url` by: for udpm://GROUP:PORT?OPTIONS also the robots' answers'
+    port above it, as bridge/lcm lanes.cpp derives it (the port above that only repeats what the
+    world sends on the first); any other URL is the only one."""
+    if not url.startswith("udpm://"):
+        return [url]
+    network, _, options = url[len("udpm://"):].partition("?")
+    group, colon, port = (network or "239.255.76.67:7667").partition(":")
+    try:
+        number = int(port, 0) if colon else 0
+    except ValueError:
+        return [url]
+    if not 1 <= number <= 65535 - 2:
+        return [url]
+    return [url, f"udpm://{group}:{number + 1}" + (f"?{options}" if options else "")]

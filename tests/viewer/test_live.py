@@ -26,7 +26,7 @@ async def watch_memq(publish_all: bool, then_another_match: bool = False) -> tup
             hellos = [await ws.receive_json(timeout=10)]
             last = FRAMES - 1 if publish_all else 0
             for _, channel, message in known_messages():  # up to the last frame's truth
-                source.lc.publish(channel, message.encode())
+                source.buses[0].publish(channel, message.encode())
                 if channel == "TL_TRUTH" and message.frame == last:
                     break
             frames = []
@@ -34,7 +34,7 @@ async def watch_memq(publish_all: bool, then_another_match: bool = False) -> tup
                 message = await ws.receive_json(timeout=10)
                 (hellos if message["type"] == "hello" else frames).append(message)
             if then_another_match:
-                source.lc.publish("TL_MATCH", match_config(field_length_mm=9000.0).encode())
+                source.buses[0].publish("TL_MATCH", match_config(field_length_mm=9000.0).encode())
                 hellos.append(await ws.receive_json(timeout=10))
             return hellos, frames
     finally:
@@ -88,3 +88,15 @@ def test_a_log_played_with_lcm_logplayer_shows_what_its_replay_shows(known_log):
         assert live["sense"] == replayed["sense"]
         assert live["beliefs"] == replayed["beliefs"], "TL_ACT_* live: the beliefs and roles the replay shows"
         assert live["game"]["secs_remaining"] == replayed["game"]["secs_remaining"]
+
+
+def test_acts_on_the_robots_port_reach_the_live_view():
+    """On udpm the robots answer on the port above the URL's (bridge/lcm lanes): the viewer
+    listens there too, or it would show no belief and no role of a live match."""
+    check = Path(__file__).with_name("live_lanes_check.py")
+    result = subprocess.run([str(ROOT / "tools" / "netns"), sys.executable, str(check)],
+                            env=viewer_env(), capture_output=True, text=True, timeout=60)
+    assert result.returncode == 0, result.stderr
+    held = {tuple(robot) for robot in json.loads(result.stdout)}
+    sent = {(m.team, m.player) for _, channel, m in known_messages() if channel.startswith("TL_ACT_")}
+    assert sent and held == sent

@@ -10,6 +10,7 @@ import lcm
 from .decode import ACT_PATTERN, CHANNELS, EVENT, GAME, RECENT_EVENTS, SENSE, STATUS, TRUTH, decode
 from .errors import ViewerError
 from .field import MATCH
+from .home import touchline_paths
 from .replay_log import BELIEF_STALE_FRAMES, ROLE_STALE_FRAMES
 
 DEFAULT_LCM_URL = "udpm://239.255.76.67:7667?ttl=0"
@@ -23,13 +24,17 @@ class LiveSource:
 
     def __init__(self, url: str = DEFAULT_LCM_URL):
         self.url = url
-        try:
-            self.lc = lcm.LCM(url)
-        except (RuntimeError, OSError, ValueError) as e:
-            hint = " (no multicast route? ip route add 224.0.0.0/4 dev lo)" if url.startswith("udpm") else ""
-            raise ViewerError(f"cannot open LCM at {url}: {e}{hint}") from None
+        # The world's messages on the URL's port, the robots' acts on the port above it.
+        self.buses = []
+        for lane in touchline_paths.lane_urls(url):
+            try:
+                self.buses.append(lcm.LCM(lane))
+            except (RuntimeError, OSError, ValueError) as e:
+                hint = " (no multicast route? ip route add 224.0.0.0/4 dev lo)" if lane.startswith("udpm") else ""
+                raise ViewerError(f"cannot open LCM at {lane}: {e}{hint}") from None
         for channel in (*CHANNELS, ACT_PATTERN):
-            self.lc.subscribe(channel, self._on_message)
+            for bus in self.buses:
+                bus.subscribe(channel, self._on_message)
         self.match = None  # the latest TL_MATCH: the page draws nothing before it
         self.truth = self.sense = None  # sense: the TL_SENSE of the truth's frame
         self.games: deque = deque(maxlen=RECENT_GAMES)
@@ -46,11 +51,13 @@ class LiveSource:
 
     def start(self) -> None:
         loop = asyncio.get_running_loop()
-        loop.add_reader(self.lc.fileno(), self.lc.handle)
+        for bus in self.buses:
+            loop.add_reader(bus.fileno(), bus.handle)
         self._task = loop.create_task(self._broadcast())
 
     async def stop(self) -> None:
-        asyncio.get_running_loop().remove_reader(self.lc.fileno())
+        for bus in self.buses:
+            asyncio.get_running_loop().remove_reader(bus.fileno())
         if self._task:
             self._task.cancel()
             await asyncio.gather(self._task, return_exceptions=True)
