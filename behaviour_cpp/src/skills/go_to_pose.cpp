@@ -34,7 +34,7 @@ ActionCommand::All GoToPose::tick(const Blackboard& blackboard) {
   } else {
     body = algorithm43(pos, error);
   }
-  return actioncommand::compose({}, body);
+  return actioncommand::compose({}, avoid_.tick(blackboard, body, toTarget.distance));
 }
 
 float GoToPose::turnError(const Blackboard& blackboard, const AbsCoord& pos) const {
