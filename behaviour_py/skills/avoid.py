@@ -7,7 +7,9 @@ teammates' poses), localisation.robotPos, gameController.playerNumber, utime. Wr
 Obstacles, robot frame (x forward, y left), from what a robot really has:
 - the sonars (thesis Algorithm 2.4): a reading under 1 is a body that far ahead in the left
   or right half of the sonars' corridor, taken SONAR_SIDE_Y off the centre line;
-- the robots the camera saw this frame;
+- the robots the camera saw, remembered in the field frame for SEEN_MEMORY_US (the head
+  follows the ball, so a robot beside the walk is seen now and then); a sighting replaces
+  those remembered within SEEN_MERGE_DIST of it;
 - the teammates' own poses from their team messages (fresh, not penalised).
 
 Around robots (a tangent rule): the nearest obstacle ahead on the walk's line, within
@@ -49,19 +51,40 @@ BACK_OFF_FRAMES = 30             # frames (1 s) of backing off ...
 BACK_OFF_FORWARD = -150.0        # mm/s: ... stepping back ...
 BACK_OFF_LEFT = 150.0            # mm/s: ... and aside, away from the obstacle
 FRAME_GAP_US = 50000             # us: ticks farther apart start the count again
+SEEN_MEMORY_US = 1500000         # us: a robot the camera saw stays an obstacle this long
+SEEN_MERGE_DIST = 400.0          # mm: a sighting replaces remembered robots this near it
 
 
-def obstacles(blackboard):
-    """[(x, y)]: the obstacles the robot knows of, mm, robot frame."""
+def remember(seen, blackboard):
+    """seen ([(utime, x, y)], field frame) with this frame's sightings in and the old ones out."""
+    utime = blackboard.utime
+    pos = blackboard.localisation.robotPos
+    cosT = math.cos(pos.theta)
+    sinT = math.sin(pos.theta)
+    kept = [entry for entry in seen if utime - entry[0] <= SEEN_MEMORY_US]
+    for robotSeen in blackboard.vision.robots:
+        forward = robotSeen.rr.x()
+        left = robotSeen.rr.y()
+        x = pos.x + forward * cosT - left * sinT
+        y = pos.y + forward * sinT + left * cosT
+        kept = [entry for entry in kept if math.hypot(entry[1] - x, entry[2] - y) >= SEEN_MERGE_DIST]
+        kept.append((utime, x, y))
+    return kept
+
+
+def obstacles(blackboard, seen=()):
+    """[(x, y)]: the obstacles the robot knows of, mm, robot frame; seen: the remembered
+    sightings (remember())."""
     found = []
     motion = blackboard.motion
     if motion.sonarLeft < 1.0:
         found.append((motion.sonarLeft * motion.sonarRange_mm, SONAR_SIDE_Y))
     if motion.sonarRight < 1.0:
         found.append((motion.sonarRight * motion.sonarRange_mm, -SONAR_SIDE_Y))
-    for seen in blackboard.vision.robots:
-        found.append((seen.rr.x(), seen.rr.y()))
     pos = blackboard.localisation.robotPos
+    for _, x, y in seen:
+        rr = robot.toRobotRelative(pos, x, y)
+        found.append((rr.x(), rr.y()))
     me = blackboard.gameController.playerNumber
     for message in blackboard.receiver.messages:
         if message.playerNumber == me or blackboard.utime - message.utime > MESSAGE_STALE_US:
@@ -143,6 +166,7 @@ class Avoid:
         self.bestDist = 0.0
         self.backOffFrames = 0
         self.backOffLeft = 0.0
+        self.seen = []  # (utime, x, y): robots the camera saw, field frame
 
     def tick(self, blackboard, body, targetDist):
         """The walk to do for `body` (a walk request) on the way to a target targetDist mm away."""
@@ -152,11 +176,12 @@ class Avoid:
             self.bestDist = targetDist
             self.backOffFrames = 0
         self.lastUtime = utime
+        self.seen = remember(self.seen, blackboard)
         backing = self.backOffFrames > 0
         if backing:
             self.backOffFrames -= 1
         else:
-            found = obstacles(blackboard)
+            found = obstacles(blackboard, self.seen)
             backing = self.blocked(found, body.forward, body.left, targetDist)
             if not backing:
                 forward, left = steer(body.forward, body.left, found, targetDist)

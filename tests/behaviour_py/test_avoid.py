@@ -6,8 +6,8 @@ import pytest
 import robot
 from boards import board, message, seenRobot
 
-from skills.avoid import (AVOID_CLEARANCE, BACK_OFF_FRAMES, BLOCKED_FRAMES, SONAR_SIDE_Y, Avoid, keepOutOfOwnBox,
-                          obstacles, steer)
+from skills.avoid import (AVOID_CLEARANCE, BACK_OFF_FRAMES, BLOCKED_FRAMES, SEEN_MEMORY_US, SONAR_SIDE_Y, Avoid,
+                          keepOutOfOwnBox, obstacles, remember, steer)
 from skills.go_to_pose import GoToPose
 from skills.team_comm import ROLE_DEFENDER, TeamInfo, encodeMessage
 
@@ -38,13 +38,29 @@ def test_obstacles_from_sonar_camera_and_teammates():
     pos = (1000.0, 0.0, math.pi / 2)  # facing +y
     messages = [poseMessage(3, 1000, 600), poseMessage(4, 0, 0, penalised=True), poseMessage(5, 0, 0, age=3_000_000),
                 poseMessage(2, 1000, 900)]  # 2 is this robot: its own message is no obstacle
-    found = obstacles(board(pos, sonar=(0.5, 1.0), robots=[seenRobot(700.0, -200.0)], messages=messages, utime=NOW))
+    seeing = board(pos, sonar=(0.5, 1.0), robots=[seenRobot(700.0, -200.0)], messages=messages, utime=NOW)
+    found = obstacles(seeing, remember([], seeing))
     assert len(found) == 3
     assert found[0] == pytest.approx((500.0, SONAR_SIDE_Y))
     assert found[1] == pytest.approx((700.0, -200.0), abs=1e-3)
     assert found[2] == pytest.approx((600.0, 0.0), abs=1e-3)  # the teammate 600 mm ahead
     assert obstacles(board(pos, sonar=(1.0, 0.25)))[0] == pytest.approx((250.0, -SONAR_SIDE_Y))
     assert obstacles(board(pos)) == []
+
+
+def test_robots_seen_are_remembered_for_a_while_where_they_were():
+    seen = remember([], board((0.0, 0.0, 0.0), robots=[seenRobot(700.0, 0.0)], utime=NOW))
+    later = board((100.0, 0.0, math.pi / 2), utime=NOW + SEEN_MEMORY_US)  # moved and turned, camera elsewhere
+    seen = remember(seen, later)
+    assert len(seen) == 1
+    assert obstacles(later, seen)[0] == pytest.approx((0.0, -600.0), abs=1e-2)  # still at (700, 0): on the right
+    assert remember(seen, board(utime=NOW + SEEN_MEMORY_US + 1)) == []
+
+
+def test_a_new_sighting_replaces_the_remembered_ones_near_it():
+    seen = remember([], board(robots=[seenRobot(700.0, 0.0), seenRobot(700.0, 1000.0)], utime=NOW))
+    seen = remember(seen, board(robots=[seenRobot(700.0, 300.0)], utime=NOW + FRAME_US))
+    assert sorted((round(x), round(y)) for _, x, y in seen) == [(700, 300), (700, 1000)]
 
 
 # Around robots
@@ -87,6 +103,13 @@ def test_go_to_pose_walks_around_a_robot_its_sonar_finds():
     blocked = GoToPose(2000.0, 0.0, 0.0).tick(board((0.0, 0.0, 0.0), sonar=(0.5, 0.5)))
     assert blocked.body.left < 0.0
     assert blocked.body.turn == pytest.approx(clear.body.turn)
+
+
+def test_a_robot_seen_once_is_walked_around_after_the_camera_looked_away():
+    goToPose = GoToPose(2000.0, 0.0, 0.0)
+    goToPose.tick(board((0.0, 0.0, 0.0), robots=[seenRobot(600.0, 0.0)], utime=NOW))
+    command = goToPose.tick(board((0.0, 0.0, 0.0), utime=NOW + FRAME_US))
+    assert command.body.left < 0.0
 
 
 # The own goal box

@@ -11,13 +11,37 @@ namespace touchline::behaviour::skills {
 
 using namespace api;
 
-std::vector<Obstacle> obstacles(const Blackboard& blackboard) {
+std::vector<Sighting> remember(const std::vector<Sighting>& seen, const Blackboard& blackboard) {
+  const int64_t utime = blackboard.utime;
+  const AbsCoord pos = blackboard.localisation.robotPos;
+  const float cosT = std::cos(pos.theta);
+  const float sinT = std::sin(pos.theta);
+  std::vector<Sighting> kept;
+  for (const Sighting& entry : seen)
+    if (utime - entry.utime <= SEEN_MEMORY_US) kept.push_back(entry);
+  for (const SeenObject& robotSeen : blackboard.vision.robots) {
+    const float forward = robotSeen.rr.x();
+    const float left = robotSeen.rr.y();
+    const float x = pos.x + forward * cosT - left * sinT;
+    const float y = pos.y + forward * sinT + left * cosT;
+    kept.erase(std::remove_if(kept.begin(), kept.end(),
+                              [&](const Sighting& e) { return std::hypot(e.x - x, e.y - y) < SEEN_MERGE_DIST; }),
+               kept.end());
+    kept.push_back({utime, x, y});
+  }
+  return kept;
+}
+
+std::vector<Obstacle> obstacles(const Blackboard& blackboard, const std::vector<Sighting>& seen) {
   std::vector<Obstacle> found;
   const MotionBlackboard& motion = blackboard.motion;
   if (motion.sonarLeft < 1.f) found.push_back({motion.sonarLeft * motion.sonarRange_mm, SONAR_SIDE_Y});
   if (motion.sonarRight < 1.f) found.push_back({motion.sonarRight * motion.sonarRange_mm, -SONAR_SIDE_Y});
-  for (const SeenObject& seen : blackboard.vision.robots) found.push_back({seen.rr.x(), seen.rr.y()});
   const AbsCoord pos = blackboard.localisation.robotPos;
+  for (const Sighting& entry : seen) {
+    const RRCoord rr = toRobotRelative(pos, entry.x, entry.y);
+    found.push_back({rr.x(), rr.y()});
+  }
   const int me = blackboard.gameController.playerNumber;
   for (const TeamMessage& message : blackboard.receiver.messages) {
     if (message.playerNumber == me || blackboard.utime - message.utime > MESSAGE_STALE_US) continue;
@@ -101,12 +125,13 @@ ActionCommand::Body Avoid::tick(const Blackboard& blackboard, const ActionComman
     backOffFrames_ = 0;
   }
   lastUtime_ = utime;
+  seen_ = remember(seen_, blackboard);
   bool backing = backOffFrames_ > 0;
   WalkVelocity v{body.forward, body.left};
   if (backing) {
     --backOffFrames_;
   } else {
-    const std::vector<Obstacle> found = obstacles(blackboard);
+    const std::vector<Obstacle> found = obstacles(blackboard, seen_);
     backing = blocked(found, body.forward, body.left, targetDist);
     if (!backing) v = steer(body.forward, body.left, found, targetDist);
   }

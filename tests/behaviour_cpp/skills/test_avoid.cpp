@@ -59,7 +59,7 @@ TEST(Avoid, ObstaclesFromSonarCameraAndTeammates) {
   b.vision.robots = {seenRobot(700.f, -200.f)};
   b.receiver.messages = {poseMessage(3, 1000, 600), poseMessage(4, 0, 0, true), poseMessage(5, 0, 0, false, 3000000),
                          poseMessage(2, 1000, 900)}; // 2 is this robot: its own message is no obstacle
-  const std::vector<Obstacle> found = obstacles(b);
+  const std::vector<Obstacle> found = obstacles(b, remember({}, b));
   ASSERT_EQ(found.size(), 3u);
   EXPECT_NEAR(found[0].x, 500.f, 1e-3f);
   EXPECT_NEAR(found[0].y, SONAR_SIDE_Y, 1e-3f);
@@ -72,6 +72,31 @@ TEST(Avoid, ObstaclesFromSonarCameraAndTeammates) {
   EXPECT_NEAR(right[0].x, 250.f, 1e-3f);
   EXPECT_NEAR(right[0].y, -SONAR_SIDE_Y, 1e-3f);
   EXPECT_TRUE(obstacles(sonarBoard(pos, 1.f, 1.f)).empty());
+}
+
+TEST(Avoid, RobotsSeenAreRememberedForAWhileWhereTheyWere) {
+  Blackboard seeing = sonarBoard({0.f, 0.f, 0.f}, 1.f, 1.f, 2, NOW);
+  seeing.vision.robots = {seenRobot(700.f, 0.f)};
+  std::vector<Sighting> seen = remember({}, seeing);
+  const Blackboard later = sonarBoard({100.f, 0.f, kPi / 2}, 1.f, 1.f, 2, NOW + SEEN_MEMORY_US); // moved and turned
+  seen = remember(seen, later);
+  ASSERT_EQ(seen.size(), 1u);
+  const std::vector<Obstacle> found = obstacles(later, seen);
+  EXPECT_NEAR(found[0].x, 0.f, 1e-2f); // still at (700, 0): on the right
+  EXPECT_NEAR(found[0].y, -600.f, 1e-2f);
+  EXPECT_TRUE(remember(seen, sonarBoard({}, 1.f, 1.f, 2, NOW + SEEN_MEMORY_US + 1)).empty());
+}
+
+TEST(Avoid, ANewSightingReplacesTheRememberedOnesNearIt) {
+  Blackboard first = sonarBoard({}, 1.f, 1.f, 2, NOW);
+  first.vision.robots = {seenRobot(700.f, 0.f), seenRobot(700.f, 1000.f)};
+  Blackboard second = sonarBoard({}, 1.f, 1.f, 2, NOW + FRAME_US);
+  second.vision.robots = {seenRobot(700.f, 300.f)};
+  const std::vector<Sighting> seen = remember(remember({}, first), second);
+  ASSERT_EQ(seen.size(), 2u);
+  EXPECT_NEAR(seen[0].y, 1000.f, 1e-2f);
+  EXPECT_NEAR(seen[1].x, 700.f, 1e-2f);
+  EXPECT_NEAR(seen[1].y, 300.f, 1e-2f);
 }
 
 // Around robots
@@ -115,6 +140,14 @@ TEST(Avoid, GoToPoseWalksAroundARobotItsSonarFinds) {
   const ActionCommand::Body blocked = GoToPose(2000.f, 0.f, 0.f).tick(sonarBoard({0.f, 0.f, 0.f}, 0.5f, 0.5f)).body;
   EXPECT_LT(blocked.left, 0.f);
   EXPECT_NEAR(blocked.turn, clear.turn, 1e-5f);
+}
+
+TEST(Avoid, ARobotSeenOnceIsWalkedAroundAfterTheCameraLookedAway) {
+  GoToPose goToPose(2000.f, 0.f, 0.f);
+  Blackboard seeing = sonarBoard({}, 1.f, 1.f, 2, NOW);
+  seeing.vision.robots = {seenRobot(600.f, 0.f)};
+  goToPose.tick(seeing);
+  EXPECT_LT(goToPose.tick(sonarBoard({}, 1.f, 1.f, 2, NOW + FRAME_US)).body.left, 0.f);
 }
 
 // The own goal box

@@ -9,7 +9,9 @@
 // Obstacles, robot frame (x forward, y left), from what a robot really has:
 // - the sonars (thesis Algorithm 2.4): a reading under 1 is a body that far ahead in the left
 //   or right half of the sonars' corridor, taken SONAR_SIDE_Y off the centre line;
-// - the robots the camera saw this frame;
+// - the robots the camera saw, remembered in the field frame for SEEN_MEMORY_US (the head
+//   follows the ball, so a robot beside the walk is seen now and then); a sighting replaces
+//   those remembered within SEEN_MERGE_DIST of it;
 // - the teammates' own poses from their team messages (fresh, not penalised).
 //
 // Around robots (a tangent rule): the nearest obstacle ahead on the walk's line, within
@@ -50,6 +52,8 @@ inline constexpr int BACK_OFF_FRAMES = 30;             ///< frames (1 s) of back
 inline constexpr float BACK_OFF_FORWARD = -150.f;      ///< mm/s: ... stepping back ...
 inline constexpr float BACK_OFF_LEFT = 150.f;          ///< mm/s: ... and aside, away from the obstacle
 inline constexpr int FRAME_GAP_US = 50000;             ///< us: ticks farther apart start the count again
+inline constexpr int SEEN_MEMORY_US = 1500000;         ///< us: a robot the camera saw stays an obstacle this long
+inline constexpr float SEEN_MERGE_DIST = 400.f;        ///< mm: a sighting replaces remembered robots this near it
 
 /// A point in the robot frame, mm (x forward, y left).
 struct Obstacle {
@@ -57,8 +61,17 @@ struct Obstacle {
   float y = 0;
 };
 
-/// The obstacles the robot knows of, robot frame.
-std::vector<Obstacle> obstacles(const api::Blackboard& blackboard);
+/// A robot the camera saw, field frame.
+struct Sighting {
+  int64_t utime = 0; ///< when, us
+  float x = 0;       ///< mm
+  float y = 0;       ///< mm
+};
+
+/// seen with this frame's sightings in and the old ones out.
+std::vector<Sighting> remember(const std::vector<Sighting>& seen, const api::Blackboard& blackboard);
+/// The obstacles the robot knows of, robot frame; seen: the remembered sightings (remember()).
+std::vector<Obstacle> obstacles(const api::Blackboard& blackboard, const std::vector<Sighting>& seen = {});
 /// Whether the field point (x, y) is in the own goal box grown by BOX_AVOID_MARGIN.
 bool inOwnBox(float x, float y);
 /// The walk (forward, left) turned onto the tangent past the nearest obstacle in its way.
@@ -84,6 +97,7 @@ class Avoid {
   float bestDist_ = 0;
   int backOffFrames_ = 0;
   float backOffLeft_ = 0;
+  std::vector<Sighting> seen_; ///< robots the camera saw, field frame
 };
 
 } // namespace touchline::behaviour::skills
