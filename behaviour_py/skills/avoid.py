@@ -24,6 +24,9 @@ slides along it (beside the box, that part becomes a step towards the field, so 
 across the box goes round its front). A robot already in it walks as asked (its target
 takes it out).
 
+Make way: a robot standing at its target steps back from an obstacle ahead of it nearer
+than YIELD_DIST at YIELD_SPEED (a robot facing another at contact counts as pushing it).
+
 Back off: a walk that for BLOCKED_FRAMES frames in a row has an obstacle within
 BLOCKED_OBSTACLE_DIST in the way and gets less than BLOCKED_PROGRESS closer to its target
 becomes BACK_OFF_FRAMES frames of stepping back and aside, away from that obstacle. Frames
@@ -53,6 +56,8 @@ BACK_OFF_LEFT = 150.0            # mm/s: ... and aside, away from the obstacle
 FRAME_GAP_US = 50000             # us: ticks farther apart start the count again
 SEEN_MEMORY_US = 1500000         # us: a robot the camera saw stays an obstacle this long
 SEEN_MERGE_DIST = 400.0          # mm: a sighting replaces remembered robots this near it
+YIELD_DIST = 400.0               # mm: a standing robot makes way for an obstacle ahead this near ...
+YIELD_SPEED = 150.0              # mm/s: ... stepping straight away from it
 
 
 def remember(seen, blackboard):
@@ -190,6 +195,23 @@ class Avoid:
         if blackboard.gameController.playerNumber != GOALIE_PLAYER:
             forward, left = keepOutOfOwnBox(blackboard.localisation.robotPos, forward, left)
         return actioncommand.walk(forward, left, 0.0 if backing else body.turn)
+
+    def stand(self, blackboard):
+        """Stand, or step away from the nearest obstacle ahead nearer than YIELD_DIST."""
+        self.lastUtime = None  # a walk after standing starts its count again
+        self.seen = remember(self.seen, blackboard)
+        nearest = None
+        for x, y in obstacles(blackboard, self.seen):
+            dist = math.hypot(x, y)
+            if x > 0.0 and dist < YIELD_DIST and (nearest is None or dist < nearest[0]):
+                nearest = (dist, x, y)
+        if nearest is None:
+            return actioncommand.stand()
+        dist, x, y = nearest
+        forward, left = -YIELD_SPEED * x / dist, -YIELD_SPEED * y / dist
+        if blackboard.gameController.playerNumber != GOALIE_PLAYER:
+            forward, left = keepOutOfOwnBox(blackboard.localisation.robotPos, forward, left)
+        return actioncommand.walk(forward, left)
 
     def blocked(self, found, forward, left, targetDist):
         """Whether the walk (forward, left) has been blocked for BLOCKED_FRAMES: then backing

@@ -112,6 +112,17 @@ def test_a_robot_seen_once_is_walked_around_after_the_camera_looked_away():
     assert command.body.left < 0.0
 
 
+# Making way
+def test_a_robot_at_its_target_steps_back_from_a_robot_ahead_of_it():
+    goToPose = GoToPose(0.0, 0.0, 0.0)
+    assert goToPose.tick(board((0.0, 0.0, 0.0), utime=NOW)).body.actionType == robot.ActionType.STAND
+    body = goToPose.tick(board((0.0, 0.0, 0.0), sonar=(0.3, 1.0), utime=NOW + FRAME_US)).body
+    assert body.actionType == robot.ActionType.WALK
+    assert body.forward * 300.0 + body.left * SONAR_SIDE_Y == pytest.approx(-150.0 * math.hypot(300.0, SONAR_SIDE_Y))
+    behind = board((0.0, 0.0, 0.0), robots=[seenRobot(-300.0, 0.0)], utime=NOW + 2 * FRAME_US)
+    assert goToPose.tick(behind).body.actionType == robot.ActionType.STAND
+
+
 # The own goal box
 def test_a_walk_into_the_own_goal_box_slides_along_its_front():
     pos = robot.AbsCoord(-2200.0, 300.0, math.pi)  # in front of the box, facing the own goal

@@ -141,6 +141,27 @@ ActionCommand::Body Avoid::tick(const Blackboard& blackboard, const ActionComman
   return actioncommand::walk(v.forward, v.left, backing ? 0.f : body.turn);
 }
 
+ActionCommand::Body Avoid::stand(const Blackboard& blackboard) {
+  lastUtime_.reset(); // a walk after standing starts its count again
+  seen_ = remember(seen_, blackboard);
+  bool any = false;
+  float nearestDist = 0, nearestX = 0, nearestY = 0;
+  for (const Obstacle& o : obstacles(blackboard, seen_)) {
+    const float dist = std::hypot(o.x, o.y);
+    if (o.x > 0.f && dist < YIELD_DIST && (!any || dist < nearestDist)) {
+      any = true;
+      nearestDist = dist;
+      nearestX = o.x;
+      nearestY = o.y;
+    }
+  }
+  if (!any) return actioncommand::stand();
+  WalkVelocity v{-YIELD_SPEED * nearestX / nearestDist, -YIELD_SPEED * nearestY / nearestDist};
+  if (blackboard.gameController.playerNumber != GOALIE_PLAYER)
+    v = keepOutOfOwnBox(blackboard.localisation.robotPos, v.forward, v.left);
+  return actioncommand::walk(v.forward, v.left);
+}
+
 bool Avoid::blocked(const std::vector<Obstacle>& found, float forward, float left, float targetDist) {
   const std::optional<Obstacle> block = blocker(found, forward, left);
   if (!block || targetDist < bestDist_ - BLOCKED_PROGRESS) {

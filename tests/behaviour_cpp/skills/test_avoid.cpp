@@ -150,6 +150,18 @@ TEST(Avoid, ARobotSeenOnceIsWalkedAroundAfterTheCameraLookedAway) {
   EXPECT_LT(goToPose.tick(sonarBoard({}, 1.f, 1.f, 2, NOW + FRAME_US)).body.left, 0.f);
 }
 
+// Making way
+TEST(Avoid, ARobotAtItsTargetStepsBackFromARobotAheadOfIt) {
+  GoToPose goToPose(0.f, 0.f, 0.f);
+  EXPECT_EQ(goToPose.tick(sonarBoard({}, 1.f, 1.f, 2, NOW)).body.actionType, ActionCommand::ActionType::STAND);
+  const ActionCommand::Body body = goToPose.tick(sonarBoard({}, 0.3f, 1.f, 2, NOW + FRAME_US)).body;
+  EXPECT_EQ(body.actionType, ActionCommand::ActionType::WALK);
+  EXPECT_NEAR(body.forward * 300.f + body.left * SONAR_SIDE_Y, -150.f * std::hypot(300.f, SONAR_SIDE_Y), 1e-2f);
+  Blackboard behind = sonarBoard({}, 1.f, 1.f, 2, NOW + 2 * FRAME_US);
+  behind.vision.robots = {seenRobot(-300.f, 0.f)};
+  EXPECT_EQ(goToPose.tick(behind).body.actionType, ActionCommand::ActionType::STAND);
+}
+
 // The own goal box
 TEST(Avoid, AWalkIntoTheOwnGoalBoxSlidesAlongItsFront) {
   const AbsCoord pos{-2200.f, 300.f, kPi}; // in front of the box, facing the own goal

@@ -26,6 +26,9 @@
 // across the box goes round its front). A robot already in it walks as asked (its target
 // takes it out).
 //
+// Make way: a robot standing at its target steps back from an obstacle ahead of it nearer
+// than YIELD_DIST at YIELD_SPEED (a robot facing another at contact counts as pushing it).
+//
 // Back off: a walk that for BLOCKED_FRAMES frames in a row has an obstacle within
 // BLOCKED_OBSTACLE_DIST in the way and gets less than BLOCKED_PROGRESS closer to its target
 // becomes BACK_OFF_FRAMES frames of stepping back and aside, away from that obstacle. Frames
@@ -54,6 +57,8 @@ inline constexpr float BACK_OFF_LEFT = 150.f;          ///< mm/s: ... and aside,
 inline constexpr int FRAME_GAP_US = 50000;             ///< us: ticks farther apart start the count again
 inline constexpr int SEEN_MEMORY_US = 1500000;         ///< us: a robot the camera saw stays an obstacle this long
 inline constexpr float SEEN_MERGE_DIST = 400.f;        ///< mm: a sighting replaces remembered robots this near it
+inline constexpr float YIELD_DIST = 400.f;             ///< mm: a standing robot makes way for an obstacle ahead this near ...
+inline constexpr float YIELD_SPEED = 150.f;            ///< mm/s: ... stepping straight away from it
 
 /// A point in the robot frame, mm (x forward, y left).
 struct Obstacle {
@@ -86,6 +91,8 @@ class Avoid {
   /// The walk to do for `body` (a walk request) on the way to a target targetDist mm away.
   api::ActionCommand::Body tick(const api::Blackboard& blackboard, const api::ActionCommand::Body& body,
                                 float targetDist);
+  /// Stand, or step away from the nearest obstacle ahead nearer than YIELD_DIST.
+  api::ActionCommand::Body stand(const api::Blackboard& blackboard);
 
  private:
   /// Whether the walk (forward, left) has been blocked for BLOCKED_FRAMES: then backing off
