@@ -25,7 +25,8 @@ across the box goes round its front). A robot already in it walks as asked (its 
 takes it out).
 
 Make way: a robot standing at its target steps back from an obstacle ahead of it nearer
-than YIELD_DIST at YIELD_SPEED (a robot facing another at contact counts as pushing it).
+than YIELD_DIST (sonar, this frame's sightings, teammates) at YIELD_SPEED (a robot facing
+another at contact counts as pushing it).
 
 Back off: a walk that for BLOCKED_FRAMES frames in a row has an obstacle within
 BLOCKED_OBSTACLE_DIST in the way and gets less than BLOCKED_PROGRESS closer to its target
@@ -41,7 +42,7 @@ from .field import OWN_BOX_FRONT_X, OWN_BOX_HALF_WIDTH
 from .robot_limits import clampWalk
 from .team_comm import GOALIE_PLAYER, MESSAGE_STALE_US, decodeMessage
 
-SONAR_SIDE_Y = 50.0              # mm: a sonar's obstacle this far left or right of the centre line
+SONAR_SIDE_Y = 50.0              # mm: a sonar's obstacle this far off the centre line
 AVOID_LOOKAHEAD = 800.0          # mm: obstacles farther along the walk are left alone
 AVOID_CLEARANCE = 400.0          # mm: pass obstacle centres this far (bodies touch at 300)
 MIN_WALK_SPEED = 1.0             # mm/s: slower walks are not steered
@@ -56,7 +57,7 @@ BACK_OFF_LEFT = 150.0            # mm/s: ... and aside, away from the obstacle
 FRAME_GAP_US = 50000             # us: ticks farther apart start the count again
 SEEN_MEMORY_US = 1500000         # us: a robot the camera saw stays an obstacle this long
 SEEN_MERGE_DIST = 400.0          # mm: a sighting replaces remembered robots this near it
-YIELD_DIST = 400.0               # mm: a standing robot makes way for an obstacle ahead this near ...
+YIELD_DIST = 400.0               # mm: a standing robot makes way for one ahead this near ...
 YIELD_SPEED = 150.0              # mm/s: ... stepping straight away from it
 
 
@@ -201,7 +202,8 @@ class Avoid:
         self.lastUtime = None  # a walk after standing starts its count again
         self.seen = remember(self.seen, blackboard)
         nearest = None
-        for x, y in obstacles(blackboard, self.seen):
+        now = [entry for entry in self.seen if entry[0] == blackboard.utime]  # not remembered ones: they may have gone
+        for x, y in obstacles(blackboard, now):
             dist = math.hypot(x, y)
             if x > 0.0 and dist < YIELD_DIST and (nearest is None or dist < nearest[0]):
                 nearest = (dist, x, y)

@@ -158,7 +158,8 @@ def test_blocked_without_progress_backs_off_then_walks_again():
     before = run(avoid, BLOCKED_FRAMES - 1)
     assert all(body.forward > 0.0 for body in before)
     backing = run(avoid, BACK_OFF_FRAMES, start=BLOCKED_FRAMES - 1)
-    assert all(body.forward < 0.0 and body.left < 0.0 and body.turn == 0.0 for body in backing)  # away from a left obstacle
+    # back and away from an obstacle on the left
+    assert all(body.forward < 0.0 and body.left < 0.0 and body.turn == 0.0 for body in backing)
     after = run(avoid, 1, start=BLOCKED_FRAMES - 1 + BACK_OFF_FRAMES)
     assert after[0].forward > 0.0
 

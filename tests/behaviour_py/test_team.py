@@ -208,7 +208,8 @@ def test_playing_takes_the_assigned_role():
     team = Team()
     command = team.tick(board((100.0, -200.0, 0.0), ball=(230.0, -150.0), player=3))  # alone: striker, kicks
     assert team.role == ROLE_STRIKER and command.body.actionType == KICK
-    assert decodeMessage(command.teamMessage) == TeamInfo(3, ROLE_STRIKER, True, False, False, 139, 230, -150, 100, -200)
+    assert decodeMessage(command.teamMessage) == TeamInfo(3, ROLE_STRIKER, True, False, False, 139, 230, -150, 100,
+                                                          -200)
     team = Team()
     team.tick(board((0.0, 0.0, 0.0), ball=(1000.0, 0.0), player=3, messages=[msg(2, 300)]))
     assert team.role == ROLE_DEFENDER

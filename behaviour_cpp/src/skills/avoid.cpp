@@ -146,7 +146,10 @@ ActionCommand::Body Avoid::stand(const Blackboard& blackboard) {
   seen_ = remember(seen_, blackboard);
   bool any = false;
   float nearestDist = 0, nearestX = 0, nearestY = 0;
-  for (const Obstacle& o : obstacles(blackboard, seen_)) {
+  std::vector<Sighting> now; // not the remembered ones: they may have gone
+  for (const Sighting& entry : seen_)
+    if (entry.utime == blackboard.utime) now.push_back(entry);
+  for (const Obstacle& o : obstacles(blackboard, now)) {
     const float dist = std::hypot(o.x, o.y);
     if (o.x > 0.f && dist < YIELD_DIST && (!any || dist < nearestDist)) {
       any = true;

@@ -27,7 +27,8 @@
 // takes it out).
 //
 // Make way: a robot standing at its target steps back from an obstacle ahead of it nearer
-// than YIELD_DIST at YIELD_SPEED (a robot facing another at contact counts as pushing it).
+// than YIELD_DIST (sonar, this frame's sightings, teammates) at YIELD_SPEED (a robot facing
+// another at contact counts as pushing it).
 //
 // Back off: a walk that for BLOCKED_FRAMES frames in a row has an obstacle within
 // BLOCKED_OBSTACLE_DIST in the way and gets less than BLOCKED_PROGRESS closer to its target
@@ -42,7 +43,7 @@
 
 namespace touchline::behaviour::skills {
 
-inline constexpr float SONAR_SIDE_Y = 50.f;            ///< mm: a sonar's obstacle this far left or right of the centre line
+inline constexpr float SONAR_SIDE_Y = 50.f;            ///< mm: a sonar's obstacle this far off the centre line
 inline constexpr float AVOID_LOOKAHEAD = 800.f;        ///< mm: obstacles farther along the walk are left alone
 inline constexpr float AVOID_CLEARANCE = 400.f;        ///< mm: pass obstacle centres this far (bodies touch at 300)
 inline constexpr float MIN_WALK_SPEED = 1.f;           ///< mm/s: slower walks are not steered
@@ -57,7 +58,7 @@ inline constexpr float BACK_OFF_LEFT = 150.f;          ///< mm/s: ... and aside,
 inline constexpr int FRAME_GAP_US = 50000;             ///< us: ticks farther apart start the count again
 inline constexpr int SEEN_MEMORY_US = 1500000;         ///< us: a robot the camera saw stays an obstacle this long
 inline constexpr float SEEN_MERGE_DIST = 400.f;        ///< mm: a sighting replaces remembered robots this near it
-inline constexpr float YIELD_DIST = 400.f;             ///< mm: a standing robot makes way for an obstacle ahead this near ...
+inline constexpr float YIELD_DIST = 400.f;             ///< mm: a standing robot makes way for one ahead this near ...
 inline constexpr float YIELD_SPEED = 150.f;            ///< mm/s: ... stepping straight away from it
 
 /// A point in the robot frame, mm (x forward, y left).
