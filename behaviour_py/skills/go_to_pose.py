@@ -3,13 +3,16 @@
 Far from the target the robot turns to face it and walks forward (it walks faster forward
 than sideways); within FORWARD_FIRST_DIST it runs Algorithm 4.3: turn on the spot while the
 heading is off by more than TURN_FIRST_ANGLE, else walk the forward/left decomposition of
-the target while turning to the target heading. Arrived (with hysteresis): stand.
+the target while turning to the target heading. Arrived (with hysteresis): stand, making
+way for a robot ahead. Every walk goes through Avoid (avoid.py): around robots, out of the
+own goal box, backing off when blocked.
 """
 import math
 
 import actioncommand
 import robot
 
+from .avoid import Avoid
 from .robot_limits import clampTurn, clampWalk
 
 WALK_GAIN = 2.0                        # 1/s: walk request (mm/s) per mm of position error
@@ -32,6 +35,7 @@ class GoToPose:
         self.faceBall = faceBall
         self.arrived = False
         self.near = False  # within FORWARD_FIRST_DIST: running Algorithm 4.3
+        self.avoid = Avoid()
 
     def setTarget(self, x, y, theta):
         self.x = x
@@ -44,7 +48,7 @@ class GoToPose:
         turnError = self.turnError(blackboard, pos)
         self.updateArrived(toTarget.distance, turnError)
         if self.arrived:
-            return actioncommand.compose(body=actioncommand.stand())
+            return actioncommand.compose(body=self.avoid.stand(blackboard))
         self.updateNear(toTarget.distance)
         if not self.near:
             body = self.forwardFirst(toTarget)
@@ -52,7 +56,7 @@ class GoToPose:
             body = actioncommand.walk(turn=clampTurn(TURN_GAIN * turnError))
         else:
             body = self.algorithm43(pos, turnError)
-        return actioncommand.compose(body=body)
+        return actioncommand.compose(body=self.avoid.tick(blackboard, body, toTarget.distance))
 
     def turnError(self, blackboard, pos):
         """How far (rad, + left) the robot must turn to have its final heading."""

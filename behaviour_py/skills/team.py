@@ -61,8 +61,9 @@ def messageInfo(blackboard, role):
     """This robot's TeamInfo from its Blackboard."""
     gc = blackboard.gameController
     ball = blackboard.localisation.ballPos
+    pos = blackboard.localisation.robotPos
     return makeTeamInfo(gc.playerNumber, role, ballRecentlySeen(blackboard), gc.penalised, blackboard.motion.fallen,
-                        blackboard.localisation.ballPosRR.distance, ball.x, ball.y)
+                        blackboard.localisation.ballPosRR.distance, ball.x, ball.y, pos.x, pos.y)
 
 
 class Team:

@@ -1,6 +1,6 @@
 """Team communication and role assignment.
 
-Every robot sends a fixed 10-byte message (MESSAGE_SIZE) every MESSAGE_EVERY_FRAMES
+Every robot sends a fixed 14-byte message (MESSAGE_SIZE) every MESSAGE_EVERY_FRAMES
 frames (5 Hz at 30 Hz), little-endian:
 
   byte 0     MESSAGE_VERSION
@@ -10,6 +10,9 @@ frames (5 Hz at 30 Hz), little-endian:
   bytes 4-5  uint16 distance to the ball, mm (NO_BALL_DISTANCE: not seen recently)
   bytes 6-7  int16 ball x, mm, team frame
   bytes 8-9  int16 ball y, mm, team frame
+  bytes 10-11 int16 robot x, mm, team frame (where the robot believes it is: teammates
+             walk around it)
+  bytes 12-13 int16 robot y, mm, team frame
 
 Millimetres are rounded half up (floor(v + 0.5)) and clamped into their field. The C++
 port (team_comm.hpp) writes the same bytes for the same inputs.
@@ -23,8 +26,8 @@ number, alternate defender, midfielder, defender, ...
 import math
 from dataclasses import dataclass
 
-MESSAGE_VERSION = 1
-MESSAGE_SIZE = 10                 # bytes
+MESSAGE_VERSION = 2
+MESSAGE_SIZE = 14                 # bytes
 MESSAGE_EVERY_FRAMES = 6          # frames between messages: 5 Hz at 30 Hz
 MESSAGE_STALE_US = 2000000        # us: older messages are ignored
 NO_BALL_DISTANCE = 65535          # mm: the ball distance of a robot that does not see it
@@ -53,6 +56,8 @@ class TeamInfo:
     ballDistance: int = NO_BALL_DISTANCE
     ballX: int = 0
     ballY: int = 0
+    robotX: int = 0
+    robotY: int = 0
 
 
 def roundMm(value, low, high):
@@ -60,12 +65,13 @@ def roundMm(value, low, high):
     return min(max(int(math.floor(value + 0.5)), low), high)
 
 
-def makeTeamInfo(playerNumber, role, ballSeen, penalised, fallen, ballDistance, ballX, ballY):
+def makeTeamInfo(playerNumber, role, ballSeen, penalised, fallen, ballDistance, ballX, ballY, robotX=0.0, robotY=0.0):
     """A TeamInfo from Blackboard values; the ball distance is NO_BALL_DISTANCE unless
     ballSeen."""
     distanceMm = roundMm(ballDistance, 0, NO_BALL_DISTANCE - 1) if ballSeen else NO_BALL_DISTANCE
     return TeamInfo(playerNumber, role, bool(ballSeen), bool(penalised), bool(fallen), distanceMm,
-                    roundMm(ballX, -32768, 32767), roundMm(ballY, -32768, 32767))
+                    roundMm(ballX, -32768, 32767), roundMm(ballY, -32768, 32767), roundMm(robotX, -32768, 32767),
+                    roundMm(robotY, -32768, 32767))
 
 
 def encodeMessage(info):
@@ -75,8 +81,11 @@ def encodeMessage(info):
     distanceMm = min(max(info.ballDistance, 0), NO_BALL_DISTANCE)
     ballX = min(max(info.ballX, -32768), 32767) & 0xffff
     ballY = min(max(info.ballY, -32768), 32767) & 0xffff
+    robotX = min(max(info.robotX, -32768), 32767) & 0xffff
+    robotY = min(max(info.robotY, -32768), 32767) & 0xffff
     return bytes([MESSAGE_VERSION, info.playerNumber & 0xff, info.role & 0xff, flags,
-                  distanceMm & 0xff, distanceMm >> 8, ballX & 0xff, ballX >> 8, ballY & 0xff, ballY >> 8])
+                  distanceMm & 0xff, distanceMm >> 8, ballX & 0xff, ballX >> 8, ballY & 0xff, ballY >> 8,
+                  robotX & 0xff, robotX >> 8, robotY & 0xff, robotY >> 8])
 
 
 def _int16(low, high):
@@ -91,7 +100,7 @@ def decodeMessage(data):
     flags = data[3]
     return TeamInfo(data[1], data[2], bool(flags & FLAG_BALL_SEEN), bool(flags & FLAG_PENALISED),
                     bool(flags & FLAG_FALLEN), data[4] | (data[5] << 8), _int16(data[6], data[7]),
-                    _int16(data[8], data[9]))
+                    _int16(data[8], data[9]), _int16(data[10], data[11]), _int16(data[12], data[13]))
 
 
 def claimDistance(ballDistance, role):

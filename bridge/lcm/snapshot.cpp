@@ -117,6 +117,9 @@ blackboard_snapshot_t to_snapshot(const api::Blackboard& bb, RobotId id, int64_t
   m.standing = bb.motion.standing;
   m.motion_ticks = bb.motion.ticks;
   m.kick_phase = static_cast<int8_t>(bb.motion.kickPhase);
+  m.sonar_left = bb.motion.sonarLeft;
+  m.sonar_right = bb.motion.sonarRight;
+  m.sonar_range_mm = bb.motion.sonarRange_mm;
 
   const auto& loc = bb.localisation;
   m.robot_pos = pose(loc.robotPos);
@@ -130,6 +133,16 @@ blackboard_snapshot_t to_snapshot(const api::Blackboard& bb, RobotId id, int64_t
   m.seen_ball_distance_mm = bb.vision.ball.distance;
   m.seen_ball_heading_rad = bb.vision.ball.heading;
   m.vision_frame = bb.vision.frame;
+  m.num_seen_robots = static_cast<int16_t>(bb.vision.robots.size());
+  for (const api::SeenObject& seen : bb.vision.robots) {
+    observation_t out;
+    out.kind = static_cast<int8_t>(seen.teammate ? ObjectKind::kTeammate : ObjectKind::kOpponent);
+    out.id = static_cast<int8_t>(seen.id);
+    out.distance_mm = seen.rr.distance;
+    out.heading_rad = seen.rr.heading;
+    out.image_x = 0;
+    m.seen_robots.push_back(out);
+  }
 
   const auto& gc = bb.gameController;
   m.game_state = static_cast<int8_t>(gc.state);
@@ -171,6 +184,9 @@ api::Blackboard from_snapshot(const blackboard_snapshot_t& m) {
   bb.motion.standing = m.standing;
   bb.motion.ticks = check.range(m.motion_ticks, 0, kNoLimit, "motion_ticks");
   bb.motion.kickPhase = check.range(m.kick_phase, 0, 3, "kick_phase");
+  bb.motion.sonarLeft = check.finite(m.sonar_left, "sonar_left");
+  bb.motion.sonarRight = check.finite(m.sonar_right, "sonar_right");
+  bb.motion.sonarRange_mm = check.finite(m.sonar_range_mm, "sonar_range_mm");
 
   auto& loc = bb.localisation;
   loc.robotPos = pose(m.robot_pos, check);
@@ -184,6 +200,14 @@ api::Blackboard from_snapshot(const blackboard_snapshot_t& m) {
   bb.vision.ball = {check.finite(m.seen_ball_distance_mm, "seen_ball_distance_mm"),
                     check.finite(m.seen_ball_heading_rad, "seen_ball_heading_rad")};
   bb.vision.frame = check.range(m.vision_frame, 0, kMaxFrame, "vision_frame");
+  for (const observation_t& seen : m.seen_robots) {
+    check.range(seen.kind, static_cast<int>(ObjectKind::kTeammate), static_cast<int>(ObjectKind::kOpponent),
+                "seen robot kind");
+    bb.vision.robots.push_back({{check.finite(seen.distance_mm, "seen robot distance_mm"),
+                                 check.finite(seen.heading_rad, "seen robot heading_rad")},
+                                check.range<int>(seen.id, 1, kMaxTeamSize, "seen robot id"),
+                                seen.kind == static_cast<int8_t>(ObjectKind::kTeammate)});
+  }
 
   auto& gc = bb.gameController;
   gc.state = static_cast<api::GameState>(

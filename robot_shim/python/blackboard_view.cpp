@@ -144,6 +144,9 @@ PyGetSetDef g_motion_fields[] = {
     TL_FIELD(MotionBlackboard, kickPhase, "0 none, 1 prepare, 2 swing, 3 recover"),
     TL_FIELD(MotionBlackboard, fallen, "lying on the ground"),
     TL_FIELD(MotionBlackboard, ticks, "motion ticks run"),
+    TL_FIELD(MotionBlackboard, sonarLeft, "nearest obstacle on the left, fraction of sonarRange_mm (1: none)"),
+    TL_FIELD(MotionBlackboard, sonarRight, "nearest obstacle on the right, fraction of sonarRange_mm (1: none)"),
+    TL_FIELD(MotionBlackboard, sonarRange_mm, "the sonars' range, mm"),
     {nullptr, nullptr, nullptr, nullptr, nullptr}};
 
 PyGetSetDef g_localisation_fields[] = {
@@ -158,6 +161,7 @@ PyGetSetDef g_vision_fields[] = {
     TL_FIELD(VisionBlackboard, ball, "the ball as seen, robot-relative (a copy)"),
     TL_FIELD(VisionBlackboard, ballSeen, "the ball was seen this frame"),
     TL_FIELD(VisionBlackboard, frame, "camera frame index"),
+    TL_FIELD(VisionBlackboard, robots, "robots seen this frame, robot.SeenObject (copies)"),
     {nullptr, nullptr, nullptr, nullptr, nullptr}};
 
 PyGetSetDef g_game_controller_fields[] = {

@@ -133,6 +133,10 @@ void define_blackboard(py::module_& m) {
   fast_fields::readonly<&TeamMessage::playerNumber>(message, "playerNumber");
   fast_fields::readonly<&TeamMessage::utime>(message, "utime");
   fast_fields::readonly<&TeamMessage::data>(message, "data", "the message's bytes (a copy)");
+  py::class_<SeenObject> seen(m, "SeenObject", "a goal post or robot the camera saw this frame");
+  fast_fields::readonly<&SeenObject::rr>(seen, "rr", "where, robot-relative (robot.RRCoord)");
+  fast_fields::readonly<&SeenObject::id>(seen, "id", "posts: 0..3; robots: the player number");
+  fast_fields::readonly<&SeenObject::teammate>(seen, "teammate", "robots: one of ours");
   // The Blackboard and its parts: read-only views of their own (blackboard_view.hpp).
   define_blackboard_views(m);
 }

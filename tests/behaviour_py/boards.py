@@ -11,19 +11,22 @@ import robot
 
 
 def board(pos=(0.0, 0.0, 0.0), ball=(1000.0, 0.0), seen=True, lost=0, headYaw=0.0, utime=0,
-          state=robot.GameState.PLAYING, player=2, penalised=False, fallen=False, messages=()):
+          state=robot.GameState.PLAYING, player=2, penalised=False, fallen=False, messages=(), sonar=(1.0, 1.0),
+          robots=()):
     """The robot at pos (x, y, theta), the ball at the field point `ball`; vision and
     localisation agree on it. seen: vision.ballSeen; lost: localisation.ballLostCount;
     state, player, penalised: gameController; fallen: motion.fallen; messages: receiver
-    (objects with playerNumber, utime, data)."""
+    (objects with playerNumber, utime, data); sonar: motion's (left, right) readings, range
+    1000 mm; robots: vision.robots (seenRobot())."""
     robotPos = robot.AbsCoord(*pos)
     ballPos = robot.AbsCoord(ball[0], ball[1], 0.0)
     ballRR = robot.toRobotRelative(robotPos, ballPos.x, ballPos.y)
     return SimpleNamespace(
         utime=utime,
         localisation=SimpleNamespace(robotPos=robotPos, ballPos=ballPos, ballPosRR=ballRR, ballLostCount=lost),
-        vision=SimpleNamespace(ballSeen=seen, ball=ballRR),
-        motion=SimpleNamespace(headYaw=headYaw, fallen=fallen),
+        vision=SimpleNamespace(ballSeen=seen, ball=ballRR, robots=list(robots)),
+        motion=SimpleNamespace(headYaw=headYaw, fallen=fallen, sonarLeft=sonar[0], sonarRight=sonar[1],
+                               sonarRange_mm=1000.0),
         gameController=SimpleNamespace(state=state, team=0, playerNumber=player, penalised=penalised),
         receiver=SimpleNamespace(messages=list(messages)),
     )
@@ -32,6 +35,12 @@ def board(pos=(0.0, 0.0, 0.0), ball=(1000.0, 0.0), seen=True, lost=0, headYaw=0.
 def message(playerNumber, data, utime=0):
     """A received team message, as blackboard.receiver.messages holds them."""
     return SimpleNamespace(playerNumber=playerNumber, utime=utime, data=bytes(data))
+
+
+def seenRobot(forward, left, number=5, teammate=False):
+    """A robot the camera saw `forward`, `left` mm from the robot, as vision.robots holds them."""
+    return SimpleNamespace(rr=robot.RRCoord(math.hypot(forward, left), math.atan2(left, forward)), id=number,
+                           teammate=teammate)
 
 
 def relative(pos, forward, left):

@@ -8,7 +8,7 @@ import re
 import pytest
 
 import behaviour
-from skills import (ball, camera, field, go_to_pose, goalie, head_scan, learned_go_to_pose, line_up_and_kick,
+from skills import (avoid, ball, camera, field, go_to_pose, goalie, head_scan, learned_go_to_pose, line_up_and_kick,
                     robot_limits, search, striker, supporter, team, team_comm, tile_policy)
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
@@ -41,7 +41,7 @@ def cpp_constants():
 def python_constants():
     """name -> value of every module-level UPPER_CASE number in behaviour_py/skills and the
     chest colours of behaviour.py."""
-    modules = {"ball": ball, "camera": camera, "go_to_pose": go_to_pose, "head_scan": head_scan,
+    modules = {"avoid": avoid, "ball": ball, "camera": camera, "go_to_pose": go_to_pose, "head_scan": head_scan,
                "line_up_and_kick": line_up_and_kick, "robot_limits": robot_limits, "field": field, "goalie": goalie,
                "search": search, "striker": striker, "supporter": supporter, "team": team, "team_comm": team_comm,
                "learned_go_to_pose": learned_go_to_pose, "tile_policy": tile_policy}

@@ -113,24 +113,25 @@ def test_striker_kicks_far_from_goal_and_dribbles_near_it():
 
 
 # Team messages: the same bytes as the C++ port for the same inputs.
-VECTOR_1 = bytes([0x01, 0x03, 0x02, 0x01, 0xD3, 0x04, 0x24, 0xFA, 0xD1, 0x07])
-VECTOR_2 = bytes([0x01, 0x07, 0x03, 0x06, 0xFF, 0xFF, 0xFF, 0x7F, 0x00, 0x80])
+VECTOR_1 = bytes([0x02, 0x03, 0x02, 0x01, 0xD3, 0x04, 0x24, 0xFA, 0xD1, 0x07, 0x2E, 0xFB, 0x38, 0x02])
+VECTOR_2 = bytes([0x02, 0x07, 0x03, 0x06, 0xFF, 0xFF, 0xFF, 0x7F, 0x00, 0x80, 0xFF, 0x7F, 0x00, 0x80])
 
 
 def test_message_test_vectors():
-    info = makeTeamInfo(3, ROLE_STRIKER, True, False, False, 1234.75, -1500.25, 2000.5)
+    info = makeTeamInfo(3, ROLE_STRIKER, True, False, False, 1234.75, -1500.25, 2000.5, -1234.5, 567.5)
     assert encodeMessage(info) == VECTOR_1
-    assert decodeMessage(VECTOR_1) == TeamInfo(3, ROLE_STRIKER, True, False, False, 1235, -1500, 2001)
-    info = makeTeamInfo(7, ROLE_DEFENDER, False, True, True, 999.0, 40000.0, -40000.0)
+    assert decodeMessage(VECTOR_1) == TeamInfo(3, ROLE_STRIKER, True, False, False, 1235, -1500, 2001, -1234, 568)
+    info = makeTeamInfo(7, ROLE_DEFENDER, False, True, True, 999.0, 40000.0, -40000.0, 50000.0, -50000.0)
     assert encodeMessage(info) == VECTOR_2
-    assert decodeMessage(VECTOR_2) == TeamInfo(7, ROLE_DEFENDER, False, True, True, NO_BALL_DISTANCE, 32767, -32768)
+    assert decodeMessage(VECTOR_2) == TeamInfo(7, ROLE_DEFENDER, False, True, True, NO_BALL_DISTANCE, 32767, -32768,
+                                               32767, -32768)
 
 
 def test_message_round_trip_and_rejects():
-    info = TeamInfo(4, ROLE_MIDFIELDER, True, False, True, 65534, -32768, 12)
+    info = TeamInfo(4, ROLE_MIDFIELDER, True, False, True, 65534, -32768, 12, 2999, -1999)
     assert decodeMessage(encodeMessage(info)) == info
-    assert decodeMessage(VECTOR_1[:9]) is None
-    assert decodeMessage(bytes([2]) + VECTOR_1[1:]) is None
+    assert decodeMessage(VECTOR_1[:13]) is None
+    assert decodeMessage(bytes([1]) + VECTOR_1[1:]) is None  # the version before robot poses
 
 
 # Role assignment
@@ -200,14 +201,15 @@ def test_penalised_and_fallen_stand():
 def test_sends_a_message_every_sixth_frame():
     team = Team()
     sent = [len(team.tick(board((0.0, 0.0, 0.0), ball=(1000.0, 0.0), player=3)).teamMessage) for _ in range(13)]
-    assert sent == [10, 0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0, 10]
+    assert sent == [14, 0, 0, 0, 0, 0, 14, 0, 0, 0, 0, 0, 14]
 
 
 def test_playing_takes_the_assigned_role():
     team = Team()
-    command = team.tick(board((0.0, 0.0, 0.0), ball=(130.0, 50.0), player=3))  # alone: striker, kicks
+    command = team.tick(board((100.0, -200.0, 0.0), ball=(230.0, -150.0), player=3))  # alone: striker, kicks
     assert team.role == ROLE_STRIKER and command.body.actionType == KICK
-    assert decodeMessage(command.teamMessage) == TeamInfo(3, ROLE_STRIKER, True, False, False, 139, 130, 50)
+    assert decodeMessage(command.teamMessage) == TeamInfo(3, ROLE_STRIKER, True, False, False, 139, 230, -150, 100,
+                                                          -200)
     team = Team()
     team.tick(board((0.0, 0.0, 0.0), ball=(1000.0, 0.0), player=3, messages=[msg(2, 300)]))
     assert team.role == ROLE_DEFENDER

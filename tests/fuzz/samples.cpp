@@ -144,6 +144,8 @@ std::vector<blackboard_snapshot_t> samples(Tag<blackboard_snapshot_t>) {
   api::Blackboard bb;
   bb.behaviour.skill = "GoToBall";
   bb.receiver.messages = {{2, 1000, {1, 2, 3}}, {3, 2000, {}}};
+  bb.motion.sonarLeft = 0.5f;
+  bb.vision.robots = {{{700, 0.1f}, 3, true}, {{400, -0.2f}, 5, false}};
   return {transport::to_snapshot(bb, {0, 2}, 30), transport::to_snapshot(api::Blackboard{}, {1, 1}, 0)};
 }
 

@@ -24,7 +24,7 @@ ActionCommand::All GoToPose::tick(const Blackboard& blackboard) {
   const RRCoord toTarget = toRobotRelative(pos, x_, y_);
   const float error = turnError(blackboard, pos);
   updateArrived(toTarget.distance, error);
-  if (arrived_) return actioncommand::compose({}, actioncommand::stand());
+  if (arrived_) return actioncommand::compose({}, avoid_.stand(blackboard));
   updateNear(toTarget.distance);
   ActionCommand::Body body;
   if (!near_) {
@@ -34,7 +34,7 @@ ActionCommand::All GoToPose::tick(const Blackboard& blackboard) {
   } else {
     body = algorithm43(pos, error);
   }
-  return actioncommand::compose({}, body);
+  return actioncommand::compose({}, avoid_.tick(blackboard, body, toTarget.distance));
 }
 
 float GoToPose::turnError(const Blackboard& blackboard, const AbsCoord& pos) const {

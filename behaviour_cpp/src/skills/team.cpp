@@ -25,8 +25,9 @@ FieldPoint readyPosition(int playerNumber) {
 TeamInfo messageInfo(const Blackboard& blackboard, int role) {
   const GameControllerBlackboard& gc = blackboard.gameController;
   const AbsCoord ball = blackboard.localisation.ballPos;
+  const AbsCoord pos = blackboard.localisation.robotPos;
   return makeTeamInfo(gc.playerNumber, role, ballRecentlySeen(blackboard), gc.penalised, blackboard.motion.fallen,
-                      blackboard.localisation.ballPosRR.distance, ball.x, ball.y);
+                      blackboard.localisation.ballPosRR.distance, ball.x, ball.y, pos.x, pos.y);
 }
 
 Team::Team(int fixedRole, const std::optional<std::string>& policy)

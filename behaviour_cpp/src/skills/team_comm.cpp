@@ -14,10 +14,10 @@ int roundMm(double value, int low, int high) {
 }
 
 TeamInfo makeTeamInfo(int playerNumber, int role, bool ballSeen, bool penalised, bool fallen, float ballDistance,
-                      float ballX, float ballY) {
+                      float ballX, float ballY, float robotX, float robotY) {
   const int distanceMm = ballSeen ? roundMm(ballDistance, 0, NO_BALL_DISTANCE - 1) : NO_BALL_DISTANCE;
   return {playerNumber, role, ballSeen, penalised, fallen, distanceMm, roundMm(ballX, -32768, 32767),
-          roundMm(ballY, -32768, 32767)};
+          roundMm(ballY, -32768, 32767), roundMm(robotX, -32768, 32767), roundMm(robotY, -32768, 32767)};
 }
 
 std::vector<uint8_t> encodeMessage(const TeamInfo& info) {
@@ -26,11 +26,15 @@ std::vector<uint8_t> encodeMessage(const TeamInfo& info) {
   const int distanceMm = std::min(std::max(info.ballDistance, 0), NO_BALL_DISTANCE);
   const int ballX = std::min(std::max(info.ballX, -32768), 32767) & 0xffff;
   const int ballY = std::min(std::max(info.ballY, -32768), 32767) & 0xffff;
+  const int robotX = std::min(std::max(info.robotX, -32768), 32767) & 0xffff;
+  const int robotY = std::min(std::max(info.robotY, -32768), 32767) & 0xffff;
   return {static_cast<uint8_t>(MESSAGE_VERSION),  static_cast<uint8_t>(info.playerNumber & 0xff),
           static_cast<uint8_t>(info.role & 0xff), static_cast<uint8_t>(flags),
           static_cast<uint8_t>(distanceMm & 0xff), static_cast<uint8_t>(distanceMm >> 8),
           static_cast<uint8_t>(ballX & 0xff),      static_cast<uint8_t>(ballX >> 8),
-          static_cast<uint8_t>(ballY & 0xff),      static_cast<uint8_t>(ballY >> 8)};
+          static_cast<uint8_t>(ballY & 0xff),      static_cast<uint8_t>(ballY >> 8),
+          static_cast<uint8_t>(robotX & 0xff),     static_cast<uint8_t>(robotX >> 8),
+          static_cast<uint8_t>(robotY & 0xff),     static_cast<uint8_t>(robotY >> 8)};
 }
 
 namespace {
@@ -52,7 +56,9 @@ std::optional<TeamInfo> decodeMessage(const std::vector<uint8_t>& data) {
                   (flags & FLAG_FALLEN) != 0,
                   data[4] | (data[5] << 8),
                   int16(data[6], data[7]),
-                  int16(data[8], data[9])};
+                  int16(data[8], data[9]),
+                  int16(data[10], data[11]),
+                  int16(data[12], data[13])};
 }
 
 int claimDistance(int ballDistance, int role) {

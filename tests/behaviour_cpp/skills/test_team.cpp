@@ -111,23 +111,30 @@ TEST(TeamStriker, KicksFarFromGoalAndDribblesNearIt) {
 
 // Team messages: the same bytes as the Python for the same inputs.
 namespace {
-const std::vector<uint8_t> VECTOR_1 = {0x01, 0x03, 0x02, 0x01, 0xD3, 0x04, 0x24, 0xFA, 0xD1, 0x07};
-const std::vector<uint8_t> VECTOR_2 = {0x01, 0x07, 0x03, 0x06, 0xFF, 0xFF, 0xFF, 0x7F, 0x00, 0x80};
+const std::vector<uint8_t> VECTOR_1 = {0x02, 0x03, 0x02, 0x01, 0xD3, 0x04, 0x24,
+                                       0xFA, 0xD1, 0x07, 0x2E, 0xFB, 0x38, 0x02};
+const std::vector<uint8_t> VECTOR_2 = {0x02, 0x07, 0x03, 0x06, 0xFF, 0xFF, 0xFF,
+                                       0x7F, 0x00, 0x80, 0xFF, 0x7F, 0x00, 0x80};
 } // namespace
 
 TEST(TeamMessage, TestVectors) {
-  EXPECT_EQ(encodeMessage(makeTeamInfo(3, ROLE_STRIKER, true, false, false, 1234.75f, -1500.25f, 2000.5f)), VECTOR_1);
-  EXPECT_EQ(decodeMessage(VECTOR_1), (TeamInfo{3, ROLE_STRIKER, true, false, false, 1235, -1500, 2001}));
-  EXPECT_EQ(encodeMessage(makeTeamInfo(7, ROLE_DEFENDER, false, true, true, 999.f, 40000.f, -40000.f)), VECTOR_2);
-  EXPECT_EQ(decodeMessage(VECTOR_2), (TeamInfo{7, ROLE_DEFENDER, false, true, true, NO_BALL_DISTANCE, 32767, -32768}));
+  EXPECT_EQ(encodeMessage(makeTeamInfo(3, ROLE_STRIKER, true, false, false, 1234.75f, -1500.25f, 2000.5f, -1234.5f,
+                                       567.5f)),
+            VECTOR_1);
+  EXPECT_EQ(decodeMessage(VECTOR_1), (TeamInfo{3, ROLE_STRIKER, true, false, false, 1235, -1500, 2001, -1234, 568}));
+  EXPECT_EQ(encodeMessage(makeTeamInfo(7, ROLE_DEFENDER, false, true, true, 999.f, 40000.f, -40000.f, 50000.f,
+                                       -50000.f)),
+            VECTOR_2);
+  EXPECT_EQ(decodeMessage(VECTOR_2),
+            (TeamInfo{7, ROLE_DEFENDER, false, true, true, NO_BALL_DISTANCE, 32767, -32768, 32767, -32768}));
 }
 
 TEST(TeamMessage, RoundTripAndRejects) {
-  const TeamInfo info{4, ROLE_MIDFIELDER, true, false, true, 65534, -32768, 12};
+  const TeamInfo info{4, ROLE_MIDFIELDER, true, false, true, 65534, -32768, 12, 2999, -1999};
   EXPECT_EQ(decodeMessage(encodeMessage(info)), info);
   EXPECT_FALSE(decodeMessage(std::vector<uint8_t>(VECTOR_1.begin(), VECTOR_1.end() - 1)));
   std::vector<uint8_t> wrongVersion = VECTOR_1;
-  wrongVersion[0] = 2;
+  wrongVersion[0] = 1; // the version before robot poses
   EXPECT_FALSE(decodeMessage(wrongVersion));
 }
 
@@ -207,15 +214,16 @@ TEST(TeamBehaviour, SendsAMessageEverySixthFrame) {
   std::vector<size_t> sent;
   for (int i = 0; i < 13; ++i)
     sent.push_back(team.tick(teamBoard({0.f, 0.f, 0.f}, 1000.f, 0.f, true, 0, GameState::PLAYING, 3)).teamMessage.size());
-  EXPECT_EQ(sent, (std::vector<size_t>{10, 0, 0, 0, 0, 0, 10, 0, 0, 0, 0, 0, 10}));
+  EXPECT_EQ(sent, (std::vector<size_t>{14, 0, 0, 0, 0, 0, 14, 0, 0, 0, 0, 0, 14}));
 }
 
 TEST(TeamBehaviour, PlayingTakesTheAssignedRole) {
   Team striker;
-  const auto command = striker.tick(teamBoard({0.f, 0.f, 0.f}, 130.f, 50.f, true, 0, GameState::PLAYING, 3));
+  const auto command = striker.tick(teamBoard({100.f, -200.f, 0.f}, 230.f, -150.f, true, 0, GameState::PLAYING, 3));
   EXPECT_EQ(striker.role(), ROLE_STRIKER);
   EXPECT_EQ(command.body.actionType, AT::KICK);
-  EXPECT_EQ(decodeMessage(command.teamMessage), (TeamInfo{3, ROLE_STRIKER, true, false, false, 139, 130, 50}));
+  EXPECT_EQ(decodeMessage(command.teamMessage),
+            (TeamInfo{3, ROLE_STRIKER, true, false, false, 139, 230, -150, 100, -200}));
   Team defender;
   defender.tick(teamBoard({0.f, 0.f, 0.f}, 1000.f, 0.f, true, 0, GameState::PLAYING, 3, false, false, {msg(2, 300)}));
   EXPECT_EQ(defender.role(), ROLE_DEFENDER);

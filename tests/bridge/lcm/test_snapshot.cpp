@@ -23,6 +23,9 @@ api::Blackboard sample() {
   bb.motion.standing = false;
   bb.motion.ticks = 3700;
   bb.motion.kickPhase = 2;
+  bb.motion.sonarLeft = 0.4f;
+  bb.motion.sonarRight = 0.9f;
+  bb.motion.sonarRange_mm = 1200;
   bb.localisation.robotPos = {-1000, 500, 1.5f};
   bb.localisation.ballPos = {200, 100, 0};
   bb.localisation.ballPosRR = {1250, -0.75f};
@@ -31,6 +34,7 @@ api::Blackboard sample() {
   bb.vision.ballSeen = true;
   bb.vision.ball = {1240, -0.7f};
   bb.vision.frame = 37;
+  bb.vision.robots = {{{600, 0.2f}, 4, true}, {{900, -0.5f}, 2, false}};
   bb.gameController.state = api::GameState::PLAYING;
   bb.gameController.team = 1;
   bb.gameController.playerNumber = 3;
@@ -75,6 +79,16 @@ TEST(Snapshot, BlackboardSurvivesEncodeAndDecode) {
   EXPECT_TRUE(out.vision.ballSeen);
   EXPECT_EQ(out.vision.ball.distance, 1240);
   EXPECT_EQ(out.vision.frame, 37);
+  EXPECT_EQ(out.motion.sonarLeft, 0.4f);
+  EXPECT_EQ(out.motion.sonarRight, 0.9f);
+  EXPECT_EQ(out.motion.sonarRange_mm, 1200);
+  ASSERT_EQ(out.vision.robots.size(), 2u);
+  EXPECT_EQ(out.vision.robots[0].rr.distance, 600);
+  EXPECT_EQ(out.vision.robots[0].id, 4);
+  EXPECT_TRUE(out.vision.robots[0].teammate);
+  EXPECT_EQ(out.vision.robots[1].rr.heading, -0.5f);
+  EXPECT_EQ(out.vision.robots[1].id, 2);
+  EXPECT_FALSE(out.vision.robots[1].teammate);
   EXPECT_EQ(out.gameController.state, api::GameState::PLAYING);
   EXPECT_EQ(out.gameController.playerNumber, 3);
   EXPECT_TRUE(out.gameController.penalised);
@@ -111,6 +125,10 @@ TEST(Snapshot, FieldsOutOfRangeAreMalformed) {
   rejected("infinite head request", [](blackboard_snapshot_t& m) { m.request_head.yaw_rad = INFINITY; });
   rejected("a message from player 8", [](blackboard_snapshot_t& m) { m.messages[0].player = 8; });
   rejected("negative ball lost count", [](blackboard_snapshot_t& m) { m.ball_lost_count = -1; });
+  rejected("NaN sonar", [](blackboard_snapshot_t& m) { m.sonar_left = std::nanf(""); });
+  rejected("a seen ball among the robots", [](blackboard_snapshot_t& m) { m.seen_robots[0].kind = 0; });
+  rejected("a seen robot number 0", [](blackboard_snapshot_t& m) { m.seen_robots[1].id = 0; });
+  rejected("a seen robot at infinity", [](blackboard_snapshot_t& m) { m.seen_robots[0].distance_mm = INFINITY; });
 }
 
 TEST(Snapshot, ChannelNamesTheRobot) {

@@ -5,7 +5,10 @@
 // Far from the target the robot turns to face it and walks forward (it walks faster forward
 // than sideways); within FORWARD_FIRST_DIST it runs Algorithm 4.3: turn on the spot while the
 // heading is off by more than TURN_FIRST_ANGLE, else walk the forward/left decomposition of
-// the target while turning to the target heading. Arrived (with hysteresis): stand.
+// the target while turning to the target heading. Arrived (with hysteresis): stand, making
+// way for a robot ahead. Every walk goes through Avoid (avoid.hpp): around robots, out of the
+// own goal box, backing off when blocked.
+#include "touchline/behaviour/skills/avoid.hpp"
 #include "touchline/robot_api/behaviour.hpp"
 
 namespace touchline::behaviour::skills {
@@ -47,6 +50,7 @@ class GoToPose : public api::Behaviour {
   bool faceBall_ = false;
   bool arrived_ = false;
   bool near_ = false; ///< within FORWARD_FIRST_DIST: running Algorithm 4.3
+  Avoid avoid_;
 };
 
 } // namespace touchline::behaviour::skills

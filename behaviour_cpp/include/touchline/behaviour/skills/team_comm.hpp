@@ -1,7 +1,7 @@
 #pragma once
 // Team communication and role assignment: the port of behaviour_py/skills/team_comm.py.
 //
-// Every robot sends a fixed 10-byte message (MESSAGE_SIZE) every MESSAGE_EVERY_FRAMES
+// Every robot sends a fixed 14-byte message (MESSAGE_SIZE) every MESSAGE_EVERY_FRAMES
 // frames (5 Hz at 30 Hz), little-endian:
 //
 //   byte 0     MESSAGE_VERSION
@@ -11,6 +11,9 @@
 //   bytes 4-5  uint16 distance to the ball, mm (NO_BALL_DISTANCE: not seen recently)
 //   bytes 6-7  int16 ball x, mm, team frame
 //   bytes 8-9  int16 ball y, mm, team frame
+//   bytes 10-11 int16 robot x, mm, team frame (where the robot believes it is: teammates
+//              walk around it)
+//   bytes 12-13 int16 robot y, mm, team frame
 //
 // Millimetres are rounded half up (floor(v + 0.5), in double as Python) and clamped into
 // their field: the same bytes as the Python for the same inputs.
@@ -28,8 +31,8 @@
 
 namespace touchline::behaviour::skills {
 
-inline constexpr int MESSAGE_VERSION = 1;
-inline constexpr int MESSAGE_SIZE = 10;            ///< bytes
+inline constexpr int MESSAGE_VERSION = 2;
+inline constexpr int MESSAGE_SIZE = 14;            ///< bytes
 inline constexpr int MESSAGE_EVERY_FRAMES = 6;     ///< frames between messages: 5 Hz at 30 Hz
 inline constexpr int MESSAGE_STALE_US = 2000000;   ///< us: older messages are ignored
 inline constexpr int NO_BALL_DISTANCE = 65535;     ///< mm: the ball distance of a robot that does not see it
@@ -56,9 +59,12 @@ struct TeamInfo {
   int ballDistance = NO_BALL_DISTANCE;
   int ballX = 0;
   int ballY = 0;
+  int robotX = 0;
+  int robotY = 0;
   bool operator==(const TeamInfo& o) const {
     return playerNumber == o.playerNumber && role == o.role && ballSeen == o.ballSeen && penalised == o.penalised &&
-           fallen == o.fallen && ballDistance == o.ballDistance && ballX == o.ballX && ballY == o.ballY;
+           fallen == o.fallen && ballDistance == o.ballDistance && ballX == o.ballX && ballY == o.ballY &&
+           robotX == o.robotX && robotY == o.robotY;
   }
 };
 
@@ -66,7 +72,7 @@ struct TeamInfo {
 int roundMm(double value, int low, int high);
 /// A TeamInfo from Blackboard values; the ball distance is NO_BALL_DISTANCE unless ballSeen.
 TeamInfo makeTeamInfo(int playerNumber, int role, bool ballSeen, bool penalised, bool fallen, float ballDistance,
-                      float ballX, float ballY);
+                      float ballX, float ballY, float robotX = 0.f, float robotY = 0.f);
 /// The MESSAGE_SIZE bytes of info.
 std::vector<uint8_t> encodeMessage(const TeamInfo& info);
 /// The TeamInfo in data, or nullopt when it is not a message of this version and size.

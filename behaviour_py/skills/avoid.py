@@ -1,0 +1,233 @@
+"""Avoid: walk around robots instead of into them, never through the own goal box, and back
+off when blocked. GoToPose passes every walk it asks for through Avoid.tick.
+
+Reads: motion.sonarLeft/sonarRight/sonarRange_mm, vision.robots, receiver.messages (the
+teammates' poses), localisation.robotPos, gameController.playerNumber, utime. Writes nothing.
+
+Obstacles, robot frame (x forward, y left), from what a robot really has:
+- the sonars (thesis Algorithm 2.4): a reading under 1 is a body that far ahead in the left
+  or right half of the sonars' corridor, taken SONAR_SIDE_Y off the centre line;
+- the robots the camera saw, remembered in the field frame for SEEN_MEMORY_US (the head
+  follows the ball, so a robot beside the walk is seen now and then); a sighting replaces
+  those remembered within SEEN_MERGE_DIST of it;
+- the teammates' own poses from their team messages (fresh, not penalised).
+
+Around robots (a tangent rule): the nearest obstacle ahead on the walk's line, within
+AVOID_LOOKAHEAD and nearer than the target, and less than AVOID_CLEARANCE off the line,
+turns the walk's direction onto the tangent of the AVOID_CLEARANCE circle around it, on the
+side the line already passes it (right when dead ahead, so two robots meeting both keep
+right). The speed is kept; the turn is not touched.
+
+The own goal box (every player but the goalie): a walk that would bring the robot into the
+box grown by BOX_AVOID_MARGIN within BOX_LOOKAHEAD loses its part into the box: the robot
+slides along it (beside the box, that part becomes a step towards the field, so a walk
+across the box goes round its front). A robot already in it walks as asked (its target
+takes it out).
+
+Make way: a robot standing at its target steps back from an obstacle ahead of it nearer
+than YIELD_DIST (sonar, this frame's sightings, teammates) at YIELD_SPEED (a robot facing
+another at contact counts as pushing it).
+
+Back off: a walk that for BLOCKED_FRAMES frames in a row has an obstacle within
+BLOCKED_OBSTACLE_DIST in the way and gets less than BLOCKED_PROGRESS closer to its target
+becomes BACK_OFF_FRAMES frames of stepping back and aside, away from that obstacle. Frames
+count while the walk is asked for every frame (utime at most FRAME_GAP_US apart).
+"""
+import math
+
+import actioncommand
+import robot
+
+from .field import OWN_BOX_FRONT_X, OWN_BOX_HALF_WIDTH
+from .robot_limits import clampWalk
+from .team_comm import GOALIE_PLAYER, MESSAGE_STALE_US, decodeMessage
+
+SONAR_SIDE_Y = 50.0              # mm: a sonar's obstacle this far off the centre line
+AVOID_LOOKAHEAD = 800.0          # mm: obstacles farther along the walk are left alone
+AVOID_CLEARANCE = 400.0          # mm: pass obstacle centres this far (bodies touch at 300)
+MIN_WALK_SPEED = 1.0             # mm/s: slower walks are not steered
+BOX_AVOID_MARGIN = 100.0         # mm: the own goal box grown by this ...
+BOX_LOOKAHEAD = 300.0            # mm: ... is not entered within this along the walk
+BLOCKED_OBSTACLE_DIST = 450.0    # mm: an obstacle this near and in the way can block
+BLOCKED_FRAMES = 45              # frames (1.5 s) without progress before backing off
+BLOCKED_PROGRESS = 100.0         # mm: nearer to the target than this is progress
+BACK_OFF_FRAMES = 30             # frames (1 s) of backing off ...
+BACK_OFF_FORWARD = -150.0        # mm/s: ... stepping back ...
+BACK_OFF_LEFT = 150.0            # mm/s: ... and aside, away from the obstacle
+FRAME_GAP_US = 50000             # us: ticks farther apart start the count again
+SEEN_MEMORY_US = 1500000         # us: a robot the camera saw stays an obstacle this long
+SEEN_MERGE_DIST = 400.0          # mm: a sighting replaces remembered robots this near it
+YIELD_DIST = 400.0               # mm: a standing robot makes way for one ahead this near ...
+YIELD_SPEED = 150.0              # mm/s: ... stepping straight away from it
+
+
+def remember(seen, blackboard):
+    """seen ([(utime, x, y)], field frame) with this frame's sightings in and the old ones out."""
+    utime = blackboard.utime
+    pos = blackboard.localisation.robotPos
+    cosT = math.cos(pos.theta)
+    sinT = math.sin(pos.theta)
+    kept = [entry for entry in seen if utime - entry[0] <= SEEN_MEMORY_US]
+    for robotSeen in blackboard.vision.robots:
+        forward = robotSeen.rr.x()
+        left = robotSeen.rr.y()
+        x = pos.x + forward * cosT - left * sinT
+        y = pos.y + forward * sinT + left * cosT
+        kept = [entry for entry in kept if math.hypot(entry[1] - x, entry[2] - y) >= SEEN_MERGE_DIST]
+        kept.append((utime, x, y))
+    return kept
+
+
+def obstacles(blackboard, seen=()):
+    """[(x, y)]: the obstacles the robot knows of, mm, robot frame; seen: the remembered
+    sightings (remember())."""
+    found = []
+    motion = blackboard.motion
+    if motion.sonarLeft < 1.0:
+        found.append((motion.sonarLeft * motion.sonarRange_mm, SONAR_SIDE_Y))
+    if motion.sonarRight < 1.0:
+        found.append((motion.sonarRight * motion.sonarRange_mm, -SONAR_SIDE_Y))
+    pos = blackboard.localisation.robotPos
+    for _, x, y in seen:
+        rr = robot.toRobotRelative(pos, x, y)
+        found.append((rr.x(), rr.y()))
+    me = blackboard.gameController.playerNumber
+    for message in blackboard.receiver.messages:
+        if message.playerNumber == me or blackboard.utime - message.utime > MESSAGE_STALE_US:
+            continue
+        info = decodeMessage(message.data)
+        if info is None or info.penalised:
+            continue
+        rr = robot.toRobotRelative(pos, float(info.robotX), float(info.robotY))
+        found.append((rr.x(), rr.y()))
+    return found
+
+
+def inOwnBox(x, y):
+    """Whether the field point (x, y) is in the own goal box grown by BOX_AVOID_MARGIN."""
+    return x < OWN_BOX_FRONT_X + BOX_AVOID_MARGIN and abs(y) < OWN_BOX_HALF_WIDTH + BOX_AVOID_MARGIN
+
+
+def steer(forward, left, found, targetDist):
+    """(forward, left): the walk turned onto the tangent past the nearest obstacle in its way."""
+    speed = math.hypot(forward, left)
+    if speed < MIN_WALK_SPEED:
+        return forward, left
+    dirX = forward / speed
+    dirY = left / speed
+    reach = min(AVOID_LOOKAHEAD, targetDist)
+    nearest = None
+    for x, y in found:
+        along = x * dirX + y * dirY
+        across = dirX * y - dirY * x  # + : left of the walk's line
+        if along <= 0.0 or along > reach or abs(across) >= AVOID_CLEARANCE:
+            continue
+        dist = math.hypot(x, y)
+        if nearest is None or dist < nearest[0]:
+            nearest = (dist, x, y, across)
+    if nearest is None:
+        return forward, left
+    dist, x, y, across = nearest
+    side = -1.0 if across >= 0.0 else 1.0  # pass an obstacle on the left on its right
+    half = math.pi / 2 if dist <= AVOID_CLEARANCE else math.asin(AVOID_CLEARANCE / dist)
+    angle = math.atan2(y, x) + side * half
+    return clampWalk(speed * math.cos(angle), speed * math.sin(angle))
+
+
+def keepOutOfOwnBox(pos, forward, left):
+    """(forward, left) less its part into the own goal box when it would enter it."""
+    speed = math.hypot(forward, left)
+    if speed < MIN_WALK_SPEED or inOwnBox(pos.x, pos.y):
+        return forward, left
+    cosT = math.cos(pos.theta)
+    sinT = math.sin(pos.theta)
+    vx = forward * cosT - left * sinT
+    vy = forward * sinT + left * cosT
+    if not inOwnBox(pos.x + vx / speed * BOX_LOOKAHEAD, pos.y + vy / speed * BOX_LOOKAHEAD):
+        return forward, left
+    if pos.x >= OWN_BOX_FRONT_X + BOX_AVOID_MARGIN:
+        vx = max(vx, 0.0)  # in front of the box: no nearer the goal line
+    else:
+        # beside it: no nearer the centre line; that part goes to the field, round the front
+        kept = max(vy, 0.0) if pos.y > 0.0 else min(vy, 0.0)
+        vx += abs(vy - kept)
+        vy = kept
+    return vx * cosT + vy * sinT, -vx * sinT + vy * cosT
+
+
+def blocker(found, forward, left):
+    """(x, y) of the nearest obstacle within BLOCKED_OBSTACLE_DIST that the walk heads towards, or None."""
+    best = None
+    for x, y in found:
+        dist = math.hypot(x, y)
+        if dist < BLOCKED_OBSTACLE_DIST and x * forward + y * left > 0.0 and (best is None or dist < best[0]):
+            best = (dist, x, y)
+    return None if best is None else (best[1], best[2])
+
+
+class Avoid:
+    def __init__(self):
+        self.lastUtime = None
+        self.blockedFrames = 0
+        self.bestDist = 0.0
+        self.backOffFrames = 0
+        self.backOffLeft = 0.0
+        self.seen = []  # (utime, x, y): robots the camera saw, field frame
+
+    def tick(self, blackboard, body, targetDist):
+        """The walk to do for `body` (a walk request) on the way to a target targetDist mm away."""
+        utime = blackboard.utime
+        if self.lastUtime is None or not 0 < utime - self.lastUtime <= FRAME_GAP_US:
+            self.blockedFrames = 0
+            self.bestDist = targetDist
+            self.backOffFrames = 0
+        self.lastUtime = utime
+        self.seen = remember(self.seen, blackboard)
+        backing = self.backOffFrames > 0
+        if backing:
+            self.backOffFrames -= 1
+        else:
+            found = obstacles(blackboard, self.seen)
+            backing = self.blocked(found, body.forward, body.left, targetDist)
+            if not backing:
+                forward, left = steer(body.forward, body.left, found, targetDist)
+        if backing:
+            forward, left = BACK_OFF_FORWARD, self.backOffLeft
+        if blackboard.gameController.playerNumber != GOALIE_PLAYER:
+            forward, left = keepOutOfOwnBox(blackboard.localisation.robotPos, forward, left)
+        return actioncommand.walk(forward, left, 0.0 if backing else body.turn)
+
+    def stand(self, blackboard):
+        """Stand, or step away from the nearest obstacle ahead nearer than YIELD_DIST."""
+        self.lastUtime = None  # a walk after standing starts its count again
+        self.seen = remember(self.seen, blackboard)
+        nearest = None
+        now = [entry for entry in self.seen if entry[0] == blackboard.utime]  # not remembered ones: they may have gone
+        for x, y in obstacles(blackboard, now):
+            dist = math.hypot(x, y)
+            if x > 0.0 and dist < YIELD_DIST and (nearest is None or dist < nearest[0]):
+                nearest = (dist, x, y)
+        if nearest is None:
+            return actioncommand.stand()
+        dist, x, y = nearest
+        forward, left = -YIELD_SPEED * x / dist, -YIELD_SPEED * y / dist
+        if blackboard.gameController.playerNumber != GOALIE_PLAYER:
+            forward, left = keepOutOfOwnBox(blackboard.localisation.robotPos, forward, left)
+        return actioncommand.walk(forward, left)
+
+    def blocked(self, found, forward, left, targetDist):
+        """Whether the walk (forward, left) has been blocked for BLOCKED_FRAMES: then backing
+        off starts (this frame is its first)."""
+        block = blocker(found, forward, left)
+        if block is None or targetDist < self.bestDist - BLOCKED_PROGRESS:
+            self.blockedFrames = 0
+            self.bestDist = targetDist
+            return False
+        self.blockedFrames += 1
+        if self.blockedFrames < BLOCKED_FRAMES:
+            return False
+        self.blockedFrames = 0
+        self.bestDist = targetDist
+        self.backOffFrames = BACK_OFF_FRAMES - 1
+        self.backOffLeft = -BACK_OFF_LEFT if block[1] >= 0.0 else BACK_OFF_LEFT
+        return True
