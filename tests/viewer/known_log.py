@@ -4,6 +4,7 @@ from pathlib import Path
 
 import lcm
 
+from touchline_viewer.decode import ROLES as ROLES_BY_CODE, TEAM_COMM
 from touchline_viewer.lcm_types import import_touchline
 
 touchline = import_touchline()
@@ -45,7 +46,7 @@ EVENTS = [(0, 0, -1, 0, "PLAYING"), (0, 2, 1, 4, "pushing"), (FALL_US, 4, 0, 2, 
 
 # Each robot's belief in its act_t (TL_ACT_<team>_<player>): its pose off the truth by
 # BELIEF_OFFSET_MM, the position covariance [xx, xy, yy] (mm^2), the ball off the truth by
-# BALL_BELIEF_OFFSET_MM, and the role its team message names (our Team's 10-byte format, sent
+# BALL_BELIEF_OFFSET_MM, and the role its team message names (our Team's format, team_comm.py's, sent
 # every ROLE_EVERY_FRAMES frames from frame 0). The inactive robot sends nothing; the penalised
 # one sends a message of another format: it has a belief but no role.
 BELIEF_OFFSET_MM = (150.0, -100.0)
@@ -53,7 +54,7 @@ BALL_BELIEF_OFFSET_MM = (100.0, 80.0)
 COVARIANCES = {(0, 1): (40000.0, 0.0, 10000.0), (0, 2): (22500.0, 0.0, 22500.0), (1, 1): (30000.0, 15000.0, 30000.0),
                (1, 2): (2500.0, 0.0, 90000.0), (1, 3): (0.0, 0.0, 0.0), (1, 4): (10000.0, 0.0, 10000.0)}
 ROLES = {(0, 1): "goalie", (0, 2): "striker", (1, 1): "goalie", (1, 2): "defender", (1, 3): "midfielder"}
-ROLE_CODES = {"goalie": 1, "striker": 2, "defender": 3, "midfielder": 4}
+ROLE_CODES = {name: code for code, name in ROLES_BY_CODE.items()}
 ROLE_EVERY_FRAMES = 6
 BALL_LOST_FRAMES = {(1, 2): 60}  # the rest saw it this frame
 
@@ -154,7 +155,7 @@ def team_message(team: int, player: int, k: int) -> bytes:
     role = ROLES.get((team, player))
     if role is None:
         return b"\x07\x07\x07\x07"  # another behaviour's message: no role in it
-    return bytes([1, player, ROLE_CODES[role], 1, 0x10, 0x01, 0, 0, 0, 0])
+    return TEAM_COMM.encodeMessage(TEAM_COMM.makeTeamInfo(player, ROLE_CODES[role], True, False, False, 272, 0, 0))
 
 
 def _act(k: int, team: int, player: int):

@@ -1,5 +1,5 @@
 """decode.py: a robot's belief from its act_t, and its role from our Team behaviours' team
-message (10 bytes, version 1, role in byte 2); anything else names no role, and a belief that
+message (behaviour_py/skills/team_comm.py's format, whatever its version); anything else names no role, and a belief that
 is not finite is left out rather than sent to the page as NaN (which JSON cannot carry)."""
 import json
 import math
@@ -7,17 +7,24 @@ import math
 import pytest
 
 from known_log import _act, belief_at
-from touchline_viewer.decode import act_belief, decode, role_in_message
+from touchline_viewer.decode import TEAM_COMM, act_belief, decode, role_in_message
 
 
-@pytest.mark.parametrize("message,role", [
-    (bytes([1, 3, 2, 0, 0, 0, 0, 0, 0, 0]), "striker"), (bytes([1, 1, 1, 0, 0, 0, 0, 0, 0, 0]), "goalie"),
-    (bytes([1, 2, 3, 0, 0, 0, 0, 0, 0, 0]), "defender"), (bytes([1, 4, 4, 0, 0, 0, 0, 0, 0, 0]), "midfielder"),
-    (bytes([1, 4, 0, 0, 0, 0, 0, 0, 0, 0]), None), (bytes([1, 4, 9, 0, 0, 0, 0, 0, 0, 0]), None),
-    (bytes([2, 3, 2, 0, 0, 0, 0, 0, 0, 0]), None), (bytes([1, 3, 2, 0]), None), (b"", None)],
+def message(role, version_change=0, size_change=0):
+    """A team message of our Team behaviours naming `role` (team_comm's own encoder)."""
+    data = bytearray(TEAM_COMM.encodeMessage(TEAM_COMM.makeTeamInfo(3, role, True, False, False, 400, 10, -20)))
+    data[0] += version_change
+    return bytes(data[:len(data) + size_change])
+
+
+@pytest.mark.parametrize("data,role", [
+    (message(TEAM_COMM.ROLE_STRIKER), "striker"), (message(TEAM_COMM.ROLE_GOALIE), "goalie"),
+    (message(TEAM_COMM.ROLE_DEFENDER), "defender"), (message(TEAM_COMM.ROLE_MIDFIELDER), "midfielder"),
+    (message(TEAM_COMM.ROLE_NONE), None), (message(9), None), (message(TEAM_COMM.ROLE_STRIKER, version_change=1), None),
+    (message(TEAM_COMM.ROLE_STRIKER, size_change=-4), None), (b"", None)],
     ids=["striker", "goalie", "defender", "midfielder", "none", "unknown", "other-version", "other-size", "empty"])
-def test_the_role_is_read_from_our_team_message_only(message, role):
-    assert role_in_message(message) == role
+def test_the_role_is_read_from_our_team_message_only(data, role):
+    assert role_in_message(data) == role
 
 
 def test_an_act_gives_the_robot_s_belief():

@@ -1,9 +1,11 @@
 """LCM messages (TL_MATCH, TL_TRUTH, TL_SENSE, TL_GAME, TL_STATUS, TL_EVENT, TL_ACT_<team>_<player>)
 to the JSON-ready dicts the page draws."""
+import importlib.util
 import math
 import struct
 
 from .field import MATCH, match_dict
+from .home import touchline_paths
 from .lcm_types import import_touchline
 
 TRUTH, SENSE, GAME, STATUS, EVENT = "TL_TRUTH", "TL_SENSE", "TL_GAME", "TL_STATUS", "TL_EVENT"
@@ -61,19 +63,27 @@ def event_dict(data: bytes) -> dict:
             "player": m.player, "text": m.text}
 
 
-# The role a robot plays, as our Team behaviours (behaviour_py/skills/team_comm.py and its C++
-# port) say it in every team message: 10 bytes, byte 0 the message version (1), byte 2 the role.
-# The robot sends it in act_t.team_message every 6 frames (5 Hz); a behaviour that sends no such
-# message has no role to show.
-TEAM_MESSAGE_VERSION, TEAM_MESSAGE_SIZE = 1, 10
-ROLES = {1: "goalie", 2: "striker", 3: "defender", 4: "midfielder"}
+# The role a robot plays, as our Team behaviours say it in every team message they send in
+# act_t.team_message (every 6 frames, 5 Hz). The format is behaviour_py/skills/team_comm.py's
+# own (plain Python, no robot module): the viewer reads it with the robots' own decoder, so it
+# follows any new version of the message. A behaviour that sends no such message has no role.
+def _team_comm():
+    path = touchline_paths.behaviour_py() / "skills" / "team_comm.py"
+    spec = importlib.util.spec_from_file_location("touchline_viewer_team_comm", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+TEAM_COMM = _team_comm()
+ROLES = {TEAM_COMM.ROLE_GOALIE: "goalie", TEAM_COMM.ROLE_STRIKER: "striker", TEAM_COMM.ROLE_DEFENDER: "defender",
+         TEAM_COMM.ROLE_MIDFIELDER: "midfielder"}
 
 
 def role_in_message(message: bytes):
     """The role named in a team message of our Team behaviours, or None (another format, or none)."""
-    if len(message) != TEAM_MESSAGE_SIZE or message[0] != TEAM_MESSAGE_VERSION:
-        return None
-    return ROLES.get(message[2])
+    info = TEAM_COMM.decodeMessage(bytes(message))
+    return ROLES.get(info.role) if info else None
 
 
 def _finite(*values) -> bool:
