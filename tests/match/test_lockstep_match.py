@@ -5,7 +5,7 @@ import pytest
 
 from touchline_harness import (LCM_URL, ROBOTS_URL, UPLINK_URL, sealed, nominal_distance, robot_entry, start_robot, start_world,
                                walk_def)
-from truth_listener import TruthListener
+from truth_listener import TruthListener, logged_truths, total_turn
 
 WALK_S = 10.0
 NO_REFEREE = ("--set", "rules.referee=false")  # calibration: no INITIAL/SET holding robots still
@@ -22,18 +22,17 @@ def truth():
     listener.stop()
 
 
-def start_pose(truth, team, player):
-    first = truth.frames[0]
-    r = next(r for r in first.robots if r.team == team and r.player == player)
+def start_pose(frames, team, player):
+    r = next(r for r in frames[0].robots if r.team == team and r.player == player)
     return r.body
 
 
-def test_full_speed_forward_covers_the_nominal_distance(tmp_path, truth):
+def test_full_speed_forward_covers_the_nominal_distance(tmp_path):
     walk = walk_def()
-    match = start_world(tmp_path, 1, WALK_S, *NO_REFEREE)
+    match = start_world(tmp_path, 1, WALK_S, *NO_REFEREE, "--log", tmp_path / "match.lcmlog")
     start_robot(match, 0, 1, "walk", forward=walk["max_forward_mm_s"])
     summary = match.finish()
-    start = start_pose(truth, 0, 1)
+    start = start_pose(logged_truths(tmp_path / "match.lcmlog"), 0, 1)
     end = robot_entry(summary, 0, 1)
     # Team 0 starts on the touchline facing +y: forward is +y.
     distance = end["y_mm"] - start.y_mm
@@ -43,33 +42,36 @@ def test_full_speed_forward_covers_the_nominal_distance(tmp_path, truth):
     assert end["frames_answered"] == summary["frames"] == 300
 
 
-def test_full_speed_sideways_both_ways_covers_the_nominal_distance(tmp_path, truth):
+def test_full_speed_sideways_both_ways_covers_the_nominal_distance(tmp_path):
     walk = walk_def()
     speed = walk["max_left_mm_s"]
-    match = start_world(tmp_path, 2, WALK_S, "--set", "match.team_size=4", *NO_REFEREE)
+    match = start_world(tmp_path, 2, WALK_S, "--set", "match.team_size=4", *NO_REFEREE,
+                        "--log", tmp_path / "match.lcmlog")
     # Both end up walking towards +x, on opposite touchlines: team 0 faces +y, so its
     # right is +x; team 1 faces -y, so its left is +x.
     start_robot(match, 0, 4, "walk", left=-speed)
     start_robot(match, 1, 4, "walk", left=speed)
     summary = match.finish()
     nominal = nominal_distance(speed, walk["accel_left_mm_s2"], WALK_S)
+    frames = logged_truths(tmp_path / "match.lcmlog")
     for team in (0, 1):
-        start = start_pose(truth, team, 4)
+        start = start_pose(frames, team, 4)
         end = robot_entry(summary, team, 4)
         assert end["x_mm"] - start.x_mm == pytest.approx(nominal, rel=0.10), f"team {team}"
         assert abs(end["y_mm"] - start.y_mm) < 0.05 * nominal
 
 
-def test_full_speed_turn_covers_the_nominal_angle(tmp_path, truth):
+def test_full_speed_turn_covers_the_nominal_angle(tmp_path):
     walk = walk_def()
     rate = walk["max_turn_rad_s"]
-    match = start_world(tmp_path, 1, WALK_S, *NO_REFEREE)
+    match = start_world(tmp_path, 1, WALK_S, *NO_REFEREE, "--log", tmp_path / "match.lcmlog")
     start_robot(match, 0, 1, "walk", turn=rate)
     summary = match.finish()
-    truth.wait_for_frame(summary["frames"] - 1)
+    frames = logged_truths(tmp_path / "match.lcmlog")
+    assert len(frames) == summary["frames"]
     nominal = nominal_distance(rate, walk["accel_turn_rad_s2"], WALK_S)
-    assert truth.total_turn(0, 1) == pytest.approx(nominal, rel=0.10)
-    start = start_pose(truth, 0, 1)
+    assert total_turn(frames, 0, 1) == pytest.approx(nominal, rel=0.10)
+    start = start_pose(frames, 0, 1)
     end = robot_entry(summary, 0, 1)
     assert math.hypot(end["x_mm"] - start.x_mm, end["y_mm"] - start.y_mm) < 150, "turned on the spot"
 

@@ -1,4 +1,7 @@
-"""Listens to TL_TRUTH over LCM (Python bindings + the generated types) in a thread."""
+"""TL_TRUTH over LCM (Python bindings + the generated types): live, in a thread, for tests
+that watch a match as it plays; or every frame of it from the match's own log (sim_world
+--log), for tests that measure a whole match: a live listener may lose a datagram when the
+machine is loaded, the log never does."""
 from __future__ import annotations
 
 import math
@@ -42,13 +45,19 @@ class TruthListener:
         self._stop.set()
         self._thread.join(timeout=5)
 
-    def total_turn(self, team: int, player: int) -> float:
-        """Heading change summed frame to frame (unwrapped), radians."""
-        total, last = 0.0, None
-        for f in self.frames:
-            for r in f.robots:
-                if r.team == team and r.player == player:
-                    if last is not None:
-                        total += math.remainder(r.body.theta_rad - last, 2 * math.pi)
-                    last = r.body.theta_rad
-        return total
+
+def logged_truths(log) -> list:
+    """Every world_truth_t of a match log (sim_world --log), in order."""
+    return [world_truth_t.decode(e.data) for e in lcm.EventLog(str(log), "r") if e.channel == "TL_TRUTH"]
+
+
+def total_turn(frames: list, team: int, player: int) -> float:
+    """Heading change of robot (team, player) summed frame to frame (unwrapped), radians."""
+    total, last = 0.0, None
+    for f in frames:
+        for r in f.robots:
+            if r.team == team and r.player == player:
+                if last is not None:
+                    total += math.remainder(r.body.theta_rad - last, 2 * math.pi)
+                last = r.body.theta_rad
+    return total
