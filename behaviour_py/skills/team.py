@@ -1,7 +1,8 @@
 """Team: the whole robot for a match. Game states, team messages, roles.
 
-Every tick the head runs LookForBall and, every MESSAGE_EVERY_FRAMES frames (counted by its
-own ticks, never wall time), the request carries this robot's team message. The body:
+Every tick the head runs LandmarkGlance (LookForBall with glances at landmarks) and, every
+MESSAGE_EVERY_FRAMES frames (counted by its own ticks, never wall time), the request carries this
+robot's team message. The body:
 penalised or fallen: stand (it gets up by itself); INITIAL, STANDBY, SET, FINISHED: stand; READY: walk
 to the player number's kick-off position (a fixed legal formation in the own half, outside
 the centre circle: the API does not say which team kicks off); PLAYING: the role's skill,
@@ -15,7 +16,7 @@ import robot
 from .ball import ballRecentlySeen
 from .goalie import GOALIE_HOME_X, Goalie
 from .go_to_pose import GoToPose
-from .look_for_ball import LookForBall
+from .landmark_glance import LandmarkGlance
 from .search import Search
 from .striker import Striker
 from .supporter import Defender, Midfielder
@@ -75,7 +76,7 @@ class Team:
         self.skills = {ROLE_GOALIE: Goalie(), ROLE_STRIKER: Striker(policy), ROLE_DEFENDER: Defender(),
                        ROLE_MIDFIELDER: Midfielder()}
         self.readyPose = GoToPose()
-        self.head = LookForBall()
+        self.head = LandmarkGlance()
         self.search = Search()
         self.frame = 0
 

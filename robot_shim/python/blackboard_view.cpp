@@ -155,6 +155,8 @@ PyGetSetDef g_localisation_fields[] = {
     TL_FIELD(LocalisationBlackboard, ballPosRR, "ball relative to the robot (a copy)"),
     TL_FIELD(LocalisationBlackboard, teamBallPos, "the team's shared ball estimate (a copy)"),
     TL_FIELD(LocalisationBlackboard, ballLostCount, "frames since the ball was last seen"),
+    TL_FIELD(LocalisationBlackboard, robotPosCovariance,
+             "row-major covariance of robotPos (x mm, y mm, theta rad), a list of 9 (a copy)"),
     {nullptr, nullptr, nullptr, nullptr, nullptr}};
 
 PyGetSetDef g_vision_fields[] = {

@@ -35,6 +35,8 @@ void bind(IniSchema& s, PhysicsDef& d) {
       .bind("physics.foot_mass_kg", &d.foot_mass_kg, "mass of one foot, kg")
       .bind("physics.foot_friction", &d.foot_friction, "friction of every contact")
       .bind("physics.max_foot_spread_mm", &d.max_foot_spread_mm, "a robot's foot centres at most this far apart, mm")
+      .bind("physics.max_foot_twist_rad", &d.max_foot_twist_rad,
+            "one foot's heading at most this far from the other's, rad (0: no limit)")
       .bind("physics.wall_restitution", &d.wall_restitution, "ball bounce off the walls, 0..1")
       .bind("physics.post_restitution", &d.post_restitution, "ball bounce off the posts, 0..1")
       .bind("physics.net_restitution", &d.net_restitution, "ball bounce off the nets, 0..1")
@@ -140,6 +142,7 @@ void validate_physics(const PhysicsDef& p) {
   require_range("physics.foot_mass_kg", p.foot_mass_kg, kMinFootMass_kg, kMaxFootMass_kg);
   require_non_negative("physics.foot_friction", p.foot_friction, kMaxFriction);
   require_range("physics.max_foot_spread_mm", p.max_foot_spread_mm, kMinBody_mm, kMaxBody_mm);
+  require_range("physics.max_foot_twist_rad", p.max_foot_twist_rad, 0.f, 3.f);
   require_fraction("physics.wall_restitution", p.wall_restitution);
   require_fraction("physics.post_restitution", p.post_restitution);
   require_fraction("physics.net_restitution", p.net_restitution);

@@ -280,7 +280,19 @@ struct World::Impl {
     }
     // A foot without a command next tick stays put.
     for (const FootVelocity& c : commands) set_velocity(c.foot, b2Vec2(0, 0), 0.f);
+    if (physics.max_foot_twist_rad > 0)
+      for (const Robot& r : robots) hold_twist(r);
     ++ticks;
+  }
+
+  /// Turns both feet of `r` towards each other, equally, until one is at most
+  /// max_foot_twist_rad from the other (their mean heading stays where it was).
+  void hold_twist(const Robot& r) const {
+    const float twist = normalise_angle(r.right->GetAngle() - r.left->GetAngle());
+    if (std::fabs(twist) <= physics.max_foot_twist_rad) return;
+    const float excess = 0.5f * (twist - std::copysign(physics.max_foot_twist_rad, twist));
+    r.left->SetTransform(r.left->GetPosition(), r.left->GetAngle() + excess);
+    r.right->SetTransform(r.right->GetPosition(), r.right->GetAngle() - excess);
   }
 
   static void set_velocity(b2Body* body, b2Vec2 linear, float angular) {

@@ -23,7 +23,8 @@ def board(pos=(0.0, 0.0, 0.0), ball=(1000.0, 0.0), seen=True, lost=0, headYaw=0.
     ballRR = robot.toRobotRelative(robotPos, ballPos.x, ballPos.y)
     return SimpleNamespace(
         utime=utime,
-        localisation=SimpleNamespace(robotPos=robotPos, ballPos=ballPos, ballPosRR=ballRR, ballLostCount=lost),
+        localisation=SimpleNamespace(robotPos=robotPos, ballPos=ballPos, ballPosRR=ballRR, ballLostCount=lost,
+                                     robotPosCovariance=[0.0] * 9),
         vision=SimpleNamespace(ballSeen=seen, ball=ballRR, robots=list(robots)),
         motion=SimpleNamespace(headYaw=headYaw, fallen=fallen, sonarLeft=sonar[0], sonarRight=sonar[1],
                                sonarRange_mm=1000.0),

@@ -8,8 +8,8 @@ import re
 import pytest
 
 import behaviour
-from skills import (avoid, ball, camera, field, go_to_pose, goalie, head_scan, learned_go_to_pose, line_up_and_kick,
-                    robot_limits, search, striker, supporter, team, team_comm, tile_policy)
+from skills import (avoid, ball, camera, field, go_to_pose, goalie, head_scan, landmark_glance, learned_go_to_pose,
+                    line_up_and_kick, robot_limits, search, striker, supporter, team, team_comm, tile_policy)
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 CPP_SKILLS = ROOT / "behaviour_cpp" / "include" / "touchline" / "behaviour" / "skills"
@@ -42,6 +42,7 @@ def python_constants():
     """name -> value of every module-level UPPER_CASE number in behaviour_py/skills and the
     chest colours of behaviour.py."""
     modules = {"avoid": avoid, "ball": ball, "camera": camera, "go_to_pose": go_to_pose, "head_scan": head_scan,
+               "landmark_glance": landmark_glance,
                "line_up_and_kick": line_up_and_kick, "robot_limits": robot_limits, "field": field, "goalie": goalie,
                "search": search, "striker": striker, "supporter": supporter, "team": team, "team_comm": team_comm,
                "learned_go_to_pose": learned_go_to_pose, "tile_policy": tile_policy}

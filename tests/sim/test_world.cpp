@@ -472,6 +472,39 @@ TEST(World, AFootCommandedBeyondTheLegsDragsTheOther) {
   EXPECT_GT(world.robot(0).right_foot.y_mm, -50.f + 100.f) << "the right foot was dragged along";
 }
 
+/// Largest jump of robot 0's body heading between two ticks, and the feet's twist at the end,
+/// while its left foot alone is turned 0.05 rad a tick for 100 ticks (5 rad, if nothing held it).
+std::pair<float, float> turn_one_foot(const PhysicsDef& physics) {
+  World world(FieldDef{}, physics);
+  world.add_robot(kRed1, Pose2D{0, 0, 0});
+  park_ball(world);
+  TickMotion twist;
+  twist.left.dtheta_rad = 0.05f;
+  float jump = 0;
+  float heading = world.robot(0).body.theta_rad;
+  for (int t = 0; t < 100; ++t) {
+    world.step({twist});
+    const float now = world.robot(0).body.theta_rad;
+    jump = std::max(jump, std::fabs(normalise_angle(now - heading)));
+    heading = now;
+  }
+  const RobotTruth r = world.robot(0);
+  return {jump, std::fabs(normalise_angle(r.right_foot.theta_rad - r.left_foot.theta_rad))};
+}
+
+// The legs hold the feet's headings within max_foot_twist_rad, so the body's heading (their
+// mean) turns smoothly. Without the limit (the default, 0) the feet turn pi apart and the body flips about.
+TEST(World, TheLegsHoldTheFeetsHeadingsTogether) {
+  PhysicsDef physics;
+  physics.max_foot_twist_rad = 0.8f;
+  const auto [jump, twist] = turn_one_foot(physics);
+  EXPECT_LE(twist, physics.max_foot_twist_rad + 1e-4f);
+  EXPECT_LT(jump, 0.05f) << "the body heading jumped";
+  PhysicsDef free = physics;
+  free.max_foot_twist_rad = 0;
+  EXPECT_GT(turn_one_foot(free).first, 3.f) << "without the limit, the body flips (the case the limit is for)";
+}
+
 // --- determinism ------------------------------------------------------------------------
 
 /// A busy scene: four robots around the ball, kicked off at 3 m/s.

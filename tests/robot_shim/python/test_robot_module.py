@@ -46,6 +46,10 @@ def test_an_empty_boards_parts_are_read_only_and_nested_values_are_copies():
     pos.x = 5.0
     assert board.localisation.robotPos.x == 0.0
     assert board.receiver.messages == [] and board.behaviour.skill == ""
+    covariance = board.localisation.robotPosCovariance  # the pose's 3x3, row-major, a copy
+    assert covariance == [0.0] * 9
+    covariance[0] = 1.0
+    assert board.localisation.robotPosCovariance[0] == 0.0
 
 
 def test_requests_are_built_field_by_field_and_take_no_constructor_arguments():

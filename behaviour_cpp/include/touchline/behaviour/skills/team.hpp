@@ -2,8 +2,9 @@
 // Team: the whole robot for a match. Game states, team messages, roles; the port of
 // behaviour_py/skills/team.py.
 //
-// Every tick the head runs LookForBall and, every MESSAGE_EVERY_FRAMES frames (counted by its
-// own ticks, never wall time), the request carries this robot's team message. The body:
+// Every tick the head runs LandmarkGlance (LookForBall with glances at landmarks) and, every
+// MESSAGE_EVERY_FRAMES frames (counted by its own ticks, never wall time), the request carries
+// this robot's team message. The body:
 // penalised or fallen: stand (it gets up by itself); INITIAL, SET, FINISHED: stand; READY:
 // walk to the player number's kick-off position (a fixed legal formation in the own half,
 // outside the centre circle: the API does not say which team kicks off); PLAYING: the role's
@@ -15,7 +16,7 @@
 #include <string>
 
 #include "touchline/behaviour/skills/goalie.hpp"
-#include "touchline/behaviour/skills/look_for_ball.hpp"
+#include "touchline/behaviour/skills/landmark_glance.hpp"
 #include "touchline/behaviour/skills/search.hpp"
 #include "touchline/behaviour/skills/striker.hpp"
 #include "touchline/behaviour/skills/supporter.hpp"
@@ -61,7 +62,7 @@ class Team : public api::Behaviour {
   Defender defender_;
   Midfielder midfielder_;
   GoToPose readyPose_;
-  LookForBall head_;
+  LandmarkGlance head_;
   Search search_;
   int64_t frame_ = 0;
 };
