@@ -2,8 +2,10 @@
 """Plays seeded matches and tabulates them (issue 5's measurements), as a sweep (sweep.py)
 of two grid cells played side by side on every core:
 
-  supporters: the supporter team (py:Team) against a team of four strikers (py:Striker)
-  ports:      the Python team (py:Team) against its C++ port (cpp:Team)
+  supporters:     the supporter team (py:Team) against a team of four strikers (py:Striker)
+  supporters_cpp: the same in C++ (cpp:Team against cpp:Striker): the same decisions (the port
+                  corpus), several times faster, so it affords more matches
+  ports:          the Python team (py:Team) against its C++ port (cpp:Team)
 
 For each match: goals for and against, penalties by kind, ball possession share, and the
 seconds robots spent stuck (spinning on the spot, or pressed against the boundary, for
@@ -25,7 +27,8 @@ import sweep_summary
 import touchline_paths
 from touchline_version import add_version_option
 
-EXPERIMENTS = {"supporters": ("py:Team", "py:Striker"), "ports": ("py:Team", "cpp:Team")}
+EXPERIMENTS = {"supporters": ("py:Team", "py:Striker"), "supporters_cpp": ("cpp:Team", "cpp:Striker"),
+               "ports": ("py:Team", "cpp:Team")}
 
 
 def matches_of(experiments: list[str], matches: int, sets: list[str], launch: list[str]) -> list[dict]:
@@ -73,7 +76,7 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     add_version_option(parser, "tools/evaluate_teams.py")
     parser.add_argument("--matches", type=int, default=20)
-    parser.add_argument("--experiments", nargs="+", choices=sorted(EXPERIMENTS), default=sorted(EXPERIMENTS))
+    parser.add_argument("--experiments", nargs="+", choices=sorted(EXPERIMENTS), default=["ports", "supporters"])
     parser.add_argument("--build-dir", type=Path, default=touchline_paths.build_dir())
     parser.add_argument("--set", action="append", default=[], help="world config override for every match")
     parser.add_argument("--workers", type=int, default=sweep.CORES, help="matches at once (default: every core)")
