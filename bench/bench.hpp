@@ -4,6 +4,7 @@
 #include <sys/types.h>
 
 #include <chrono>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -70,6 +71,17 @@ std::string describe_status(int status);
 /// Makes this (forked) child die with its parent; returns false if the parent is already gone.
 bool die_with_parent(pid_t parent);
 void kill_and_reap(pid_t pid);
+
+/// Times opt.warmup + opt.rounds calls of `round` (one ping, true once every responder has
+/// answered within the timeout it is given in milliseconds) into `result`'s median, p90, min
+/// and max; a round not answered counts in result.lost_rounds, and more than 1 % of them (at
+/// least 10) throws BenchError "<what>: N rounds lost<detail()>" (round_trips.cpp).
+void time_rounds(const Options& opt, const std::function<bool(int timeout_ms)>& round, const std::string& what,
+                 FloorResult& result, const std::function<std::string()>& detail = {});
+/// Sends the responders' stop (`send_stop`, again every 20 ms: a datagram may be lost) until
+/// every child in `children` has exited, for 2 s at most; throws BenchError naming `what` for
+/// a child that failed or for those that ignored the stop.
+void stop_responders(std::vector<pid_t>& children, const std::function<void()>& send_stop, const std::string& what);
 
 /// Round trip from one ping to all `responders` pongs, over forked responder processes.
 FloorResult measure_floor(const Options& opt, int responders);

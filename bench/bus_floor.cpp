@@ -103,40 +103,9 @@ FloorResult measure_bus_floor(const Options& opt, int responders) {
     while (!round(50))
       if (seconds_since(join_start) > 10)
         throw BenchError("bus responders never all answered a ping within 10 s");
-    std::vector<double> rtt_us;
-    for (int i = 0; i < opt.warmup + opt.rounds; ++i) {
-      const auto t0 = Clock::now();
-      const bool ok = round(1000);
-      const double us = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
-      if (!ok) {
-        if (++result.lost_rounds > std::max(10, (opt.warmup + opt.rounds) / 100))
-          throw BenchError("bus round trip: " + std::to_string(result.lost_rounds) + " rounds lost");
-        continue;
-      }
-      if (i >= opt.warmup) rtt_us.push_back(us);
-    }
-    if (rtt_us.empty()) throw BenchError("bus round trip: no round completed");
-    result.median_us = median(rtt_us);
-    result.p90_us = percentile(rtt_us, 0.9);
-    result.min_us = *std::min_element(rtt_us.begin(), rtt_us.end());
-    result.max_us = *std::max_element(rtt_us.begin(), rtt_us.end());
+    time_rounds(opt, round, "bus round trip", result);
     const uint8_t stop = 1;
-    const auto stop_start = Clock::now();
-    while (!children.empty() && seconds_since(stop_start) < 2) {
-      bus.publish(kBusStop, &stop, 1);
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
-      for (auto it = children.begin(); it != children.end();) {
-        int status = 0;
-        if (waitpid(*it, &status, WNOHANG) == *it) {
-          if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-            throw BenchError("bus responder (pid " + std::to_string(*it) + ") " + describe_status(status));
-          it = children.erase(it);
-        } else {
-          ++it;
-        }
-      }
-    }
-    if (!children.empty()) throw BenchError(std::to_string(children.size()) + " bus responder(s) ignored the stop");
+    stop_responders(children, [&] { bus.publish(kBusStop, &stop, 1); }, "bus responder");
   } catch (...) {
     cleanup();
     throw;

@@ -160,46 +160,12 @@ FloorResult measure_floor(const Options& opt, int responders) {
                          "bench/run or tools/netns)");
     }
 
-    std::vector<double> rtt_us;
-    rtt_us.reserve(static_cast<size_t>(opt.rounds));
-    for (int round = 0; round < opt.warmup + opt.rounds; ++round) {
-      const auto t0 = Clock::now();
-      const bool ok = ping_round(lcm, counter, seq++, 1000);
-      const double us = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
-      if (!ok) {
-        ++result.lost_rounds;
-        if (result.lost_rounds > std::max(10, (opt.warmup + opt.rounds) / 100))
-          throw BenchError("LCM round trip: " + std::to_string(result.lost_rounds) +
-                           " rounds lost (responders " + counter.missing() + " silent for 1 s)");
-        continue;
-      }
-      if (round >= opt.warmup) rtt_us.push_back(us);
-    }
-    if (rtt_us.empty()) throw BenchError("LCM round trip: no round completed");
-    result.median_us = median(rtt_us);
-    result.p90_us = percentile(rtt_us, 0.9);
-    result.min_us = *std::min_element(rtt_us.begin(), rtt_us.end());
-    result.max_us = *std::max_element(rtt_us.begin(), rtt_us.end());
-
-    // Stop the responders (resent in case a datagram is lost); kill whoever lingers.
+    time_rounds(
+        opt, [&](int timeout_ms) { return ping_round(lcm, counter, seq++, timeout_ms); }, "LCM round trip", result,
+        [&] { return " (responders " + counter.missing() + " silent for 1 s)"; });
+    // Stop the responders (resent in case a datagram is lost).
     const char stop = 1;
-    const auto stop_start = Clock::now();
-    while (!children.empty() && seconds_since(stop_start) < 2) {
-      lcm.publish(kStopChannel, &stop, 1);
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
-      for (auto it = children.begin(); it != children.end();) {
-        int status = 0;
-        if (waitpid(*it, &status, WNOHANG) == *it) {
-          if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-            throw BenchError("LCM responder (pid " + std::to_string(*it) + ") " + describe_status(status));
-          it = children.erase(it);
-        } else {
-          ++it;
-        }
-      }
-    }
-    if (!children.empty())
-      throw BenchError(std::to_string(children.size()) + " LCM responder(s) ignored the stop message for 2 s");
+    stop_responders(children, [&] { lcm.publish(kStopChannel, &stop, 1); }, "LCM responder");
   } catch (...) {
     cleanup();
     throw;
