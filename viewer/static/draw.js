@@ -173,35 +173,30 @@ function drawLed(ctx, v, foot, r) {
 const labelY = (v, r) => v.py(r.body[1]) - Math.max(16, 170 * v.s);
 const roleY = (v, r) => v.py(r.body[1]) + Math.max(16, 170 * v.s);
 
+// A label on the field: white text with a black outline, readable on grass, lines and feet.
+function drawOutlinedText(ctx, text, x, y, sizePx, fill) {
+  ctx.save();
+  ctx.font = `bold ${sizePx}px 'DejaVu Sans', sans-serif`;
+  ctx.textAlign = "center";
+  ctx.textBaseline = "middle";
+  ctx.lineWidth = 3;
+  ctx.strokeStyle = "#000";
+  ctx.strokeText(text, x, y);
+  ctx.fillStyle = fill;
+  ctx.fillText(text, x, y);
+  ctx.restore();
+}
+
 // The role the robot's behaviour plays (from its team message, see decode.py), under its feet.
 function drawRole(ctx, v, r, role) {
   if (!role) return null;
   const x = v.px(r.body[0]), y = roleY(v, r);
-  ctx.save();
-  ctx.font = "bold 10px 'DejaVu Sans', sans-serif";
-  ctx.textAlign = "center";
-  ctx.textBaseline = "middle";
-  ctx.lineWidth = 3;
-  ctx.strokeStyle = "#000";
-  ctx.strokeText(role, x, y);
-  ctx.fillStyle = "#fff";
-  ctx.fillText(role, x, y);
-  ctx.restore();
+  drawOutlinedText(ctx, role, x, y, 10, "#fff");
   return { text: role, px: round1(x), py: round1(y) };
 }
 
 function drawNumber(ctx, v, r) {
-  const x = v.px(r.body[0]), y = labelY(v, r);
-  ctx.save();
-  ctx.font = "bold 13px 'DejaVu Sans', sans-serif";
-  ctx.textAlign = "center";
-  ctx.textBaseline = "middle";
-  ctx.lineWidth = 3;
-  ctx.strokeStyle = "#000";
-  ctx.strokeText(String(r.player), x, y);
-  ctx.fillStyle = r.active ? "#fff" : "#c8c8c8";
-  ctx.fillText(String(r.player), x, y);
-  ctx.restore();
+  drawOutlinedText(ctx, String(r.player), v.px(r.body[0]), labelY(v, r), 13, r.active ? "#fff" : "#c8c8c8");
 }
 
 // The sonar (thesis Algorithm 2.4) watches a corridor ahead of the robot, half_width_mm either
