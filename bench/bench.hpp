@@ -72,6 +72,10 @@ std::string describe_status(int status);
 bool die_with_parent(pid_t parent);
 void kill_and_reap(pid_t pid);
 
+/// Forks `count` responders, child `i` running responder_main(i) (which never returns), with
+/// stdio flushed first so nothing buffered is written twice; on a failed fork kills those
+/// started and throws BenchError (round_trips.cpp).
+std::vector<pid_t> fork_responders(int count, const std::function<void(int index)>& responder_main);
 /// Times opt.warmup + opt.rounds calls of `round` (one ping, true once every responder has
 /// answered within the timeout it is given in milliseconds) into `result`'s median, p90, min
 /// and max; a round not answered counts in result.lost_rounds, and more than 1 % of them (at

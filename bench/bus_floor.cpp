@@ -52,24 +52,14 @@ constexpr const char* kBusPongPrefix = "TL_ACT_9_";    // the robots' lane, as a
 } // namespace
 
 FloorResult measure_bus_floor(const Options& opt, int responders) {
-  std::cout << std::flush;
-  std::cerr << std::flush;
   const MatchKey key = MatchKey::random();
   const pid_t parent = getpid();
-  std::vector<pid_t> children;
+  std::vector<pid_t> children =
+      fork_responders(responders, [&](int i) { bus_responder_main(opt.lcm_url, key, i, parent); });
   const auto cleanup = [&] {
     for (pid_t pid : children) kill_and_reap(pid);
     children.clear();
   };
-  for (int i = 0; i < responders; ++i) {
-    const pid_t pid = fork();
-    if (pid < 0) {
-      cleanup();
-      throw BenchError(std::string("fork failed: ") + std::strerror(errno));
-    }
-    if (pid == 0) bus_responder_main(opt.lcm_url, key, i, parent);
-    children.push_back(pid);
-  }
   FloorResult result;
   result.responders = responders;
   try {

@@ -116,23 +116,12 @@ bool ping_round(lcm::LCM& lcm, PongCounter& counter, uint64_t seq, int timeout_m
 }
 
 FloorResult measure_floor(const Options& opt, int responders) {
-  std::cout << std::flush;  // nothing buffered may be written twice by the children
-  std::cerr << std::flush;
   const pid_t parent = getpid();
-  std::vector<pid_t> children;
+  std::vector<pid_t> children = fork_responders(responders, [&](int i) { responder_main(opt.lcm_url, i, parent); });
   const auto cleanup = [&] {
     for (pid_t pid : children) kill_and_reap(pid);
     children.clear();
   };
-  for (int i = 0; i < responders; ++i) {
-    const pid_t pid = fork();
-    if (pid < 0) {
-      cleanup();
-      throw BenchError(std::string("fork failed: ") + std::strerror(errno));
-    }
-    if (pid == 0) responder_main(opt.lcm_url, i, parent);
-    children.push_back(pid);
-  }
 
   FloorResult result;
   result.responders = responders;

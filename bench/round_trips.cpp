@@ -1,13 +1,34 @@
-// The two round-trip floors' common loop (lcm_floor.cpp over LCM, bus_floor.cpp over the
-// match bus): timing the rounds, then stopping the responders.
+// What the two round-trip floors share (lcm_floor.cpp over LCM, bus_floor.cpp over the match
+// bus): forking the responders, timing the rounds, then stopping the responders.
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <iostream>
 #include <thread>
 
 #include "bench.hpp"
 
 namespace touchline::bench {
+
+std::vector<pid_t> fork_responders(int count, const std::function<void(int index)>& responder_main) {
+  std::cout << std::flush;
+  std::cerr << std::flush;
+  std::vector<pid_t> children;
+  for (int i = 0; i < count; ++i) {
+    const pid_t pid = fork();
+    if (pid < 0) {
+      const std::string reason = std::strerror(errno);
+      for (pid_t child : children) kill_and_reap(child);
+      throw BenchError("fork failed: " + reason);
+    }
+    if (pid == 0) responder_main(i);
+    children.push_back(pid);
+  }
+  return children;
+}
 
 void time_rounds(const Options& opt, const std::function<bool(int timeout_ms)>& round, const std::string& what,
                  FloorResult& result, const std::function<std::string()>& detail) {
