@@ -225,10 +225,11 @@ int main(int argc, char** argv) {
       const int64_t sense_utime = match.utime();
       play->step_frame();
       // Each robot's answer, as sim_world logs a robot_shim's act: at its frame's time, before
-      // the truth it led to (the viewer shows roles and beliefs from them).
+      // the truth it led to (the viewer shows roles and beliefs from them). No process here, so
+      // no shim instance: 0.
       if (recorder)
         for (const RobotAct& act : play->acts())
-          record_bytes(transport::act_channel(act.id), transport::encoded(transport::to_lcm(act, sense_utime, 0)), // no process: instance 0
+          record_bytes(transport::act_channel(act.id), transport::encoded(transport::to_lcm(act, sense_utime, 0)),
                        sense_utime);
       const std::vector<uint8_t> truth = transport::encoded(transport::to_msg(match.truth()));
       truth_hash.add(truth.data(), truth.size());
