@@ -76,6 +76,11 @@ void kill_and_reap(pid_t pid);
 /// stdio flushed first so nothing buffered is written twice; on a failed fork kills those
 /// started and throws BenchError (round_trips.cpp).
 std::vector<pid_t> fork_responders(int count, const std::function<void(int index)>& responder_main);
+/// Pings (`round` with 50 ms) until every responder answers, as they subscribe one by one;
+/// throws BenchError when a child in `children` exits first ("<what> (pid N) ... before
+/// answering") or after 10 s ("<silent> never answered a ping within 10 s<hint>").
+void await_responders(const std::function<bool(int timeout_ms)>& round, std::vector<pid_t>& children,
+                      const std::string& what, const std::function<std::string()>& silent, const std::string& hint);
 /// Times opt.warmup + opt.rounds calls of `round` (one ping, true once every responder has
 /// answered within the timeout it is given in milliseconds) into `result`'s median, p90, min
 /// and max; a round not answered counts in result.lost_rounds, and more than 1 % of them (at

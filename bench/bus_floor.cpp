@@ -4,7 +4,6 @@
 // tagged, each lane read in the caller's thread. LCM's floor (lcm_floor.cpp) is the cap issue #14 states its goal
 // against; this one says how much of the frame the bus leaves to the world and the robots.
 #include <sys/types.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -89,10 +88,7 @@ FloorResult measure_bus_floor(const Options& opt, int responders) {
       }
       return true;
     };
-    const auto join_start = Clock::now();
-    while (!round(50))
-      if (seconds_since(join_start) > 10)
-        throw BenchError("bus responders never all answered a ping within 10 s");
+    await_responders(round, children, "bus responder", [] { return std::string("bus responders"); }, "");
     time_rounds(opt, round, "bus round trip", result);
     const uint8_t stop = 1;
     stop_responders(children, [&] { bus.publish(kBusStop, &stop, 1); }, "bus responder");

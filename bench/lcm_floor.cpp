@@ -3,7 +3,6 @@
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/types.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -133,25 +132,14 @@ FloorResult measure_floor(const Options& opt, int responders) {
 
     // Until every responder has subscribed (answers), keep pinging; 10 s at most.
     uint64_t seq = 1;
-    const auto join_start = Clock::now();
-    while (!ping_round(lcm, counter, seq++, 50)) {
-      for (pid_t pid : children) {
-        int status = 0;
-        if (waitpid(pid, &status, WNOHANG) == pid) {
-          children.erase(std::find(children.begin(), children.end(), pid));
-          throw BenchError("LCM responder (pid " + std::to_string(pid) + ") " + describe_status(status) +
-                           " before answering");
-        }
-      }
-      if (seconds_since(join_start) > 10)
-        throw BenchError("LCM responders " + counter.missing() + " of " + std::to_string(responders) +
-                         " never answered a ping within 10 s (is multicast routed on lo? run through "
-                         "bench/run or tools/netns)");
-    }
+    const auto round = [&](int timeout_ms) { return ping_round(lcm, counter, seq++, timeout_ms); };
+    await_responders(
+        round, children, "LCM responder",
+        [&] { return "LCM responders " + counter.missing() + " of " + std::to_string(responders); },
+        " (is multicast routed on lo? run through bench/run or tools/netns)");
 
-    time_rounds(
-        opt, [&](int timeout_ms) { return ping_round(lcm, counter, seq++, timeout_ms); }, "LCM round trip", result,
-        [&] { return " (responders " + counter.missing() + " silent for 1 s)"; });
+    time_rounds(opt, round, "LCM round trip", result,
+                [&] { return " (responders " + counter.missing() + " silent for 1 s)"; });
     // Stop the responders (resent in case a datagram is lost).
     const char stop = 1;
     stop_responders(children, [&] { lcm.publish(kStopChannel, &stop, 1); }, "LCM responder");

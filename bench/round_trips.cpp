@@ -1,5 +1,6 @@
 // What the two round-trip floors share (lcm_floor.cpp over LCM, bus_floor.cpp over the match
-// bus): forking the responders, timing the rounds, then stopping the responders.
+// bus): forking the responders, waiting until they all answer, timing the rounds, then
+// stopping the responders.
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -28,6 +29,21 @@ std::vector<pid_t> fork_responders(int count, const std::function<void(int index
     children.push_back(pid);
   }
   return children;
+}
+
+void await_responders(const std::function<bool(int timeout_ms)>& round, std::vector<pid_t>& children,
+                      const std::string& what, const std::function<std::string()>& silent, const std::string& hint) {
+  const auto join_start = Clock::now();
+  while (!round(50)) {
+    for (pid_t pid : children) {
+      int status = 0;
+      if (waitpid(pid, &status, WNOHANG) == pid) {
+        children.erase(std::find(children.begin(), children.end(), pid));
+        throw BenchError(what + " (pid " + std::to_string(pid) + ") " + describe_status(status) + " before answering");
+      }
+    }
+    if (seconds_since(join_start) > 10) throw BenchError(silent() + " never answered a ping within 10 s" + hint);
+  }
 }
 
 void time_rounds(const Options& opt, const std::function<bool(int timeout_ms)>& round, const std::string& what,
