@@ -10,6 +10,8 @@ TL_TRUTH (where every robot and the ball are); writes nothing.
   ball moving: a sample in PLAYING whose ball is at least BALL_MOVING_MM from where it was
               a second before; its share of all samples of the match (set-up states, half
               time and stoppages count as not moving) is "ball_moving_share".
+  playing:    the share of all samples in PLAYING, "playing_share": the most ball_moving_share
+              can be, and its divisor for the share of play time the ball moved.
 """
 from __future__ import annotations
 
@@ -43,7 +45,7 @@ def analyse_log(log: Path) -> dict:
     edge_x = edge_y = None  # the carpet's edges, from TL_MATCH
     truth_frames = 0
     ball_path = []  # the ball's last SAMPLES_PER_S + 1 samples
-    samples = moving_samples = 0
+    samples = moving_samples = playing_samples = 0
     for event in lcm.EventLog(str(log), "r"):
         if event.channel == "TL_MATCH" and edge_x is None:
             match = match_config_t.decode(event.data)
@@ -63,6 +65,7 @@ def analyse_log(log: Path) -> dict:
         samples += 1
         ball_path = [*ball_path[-SAMPLES_PER_S:], (truth.ball_x_mm, truth.ball_y_mm)]
         moving_samples += playing and ball_moving(ball_path)
+        playing_samples += playing
         nearest = None
         for r in truth.robots:
             counts = playing and r.active and not r.penalised and not r.fallen
@@ -79,7 +82,8 @@ def analyse_log(log: Path) -> dict:
             possession[nearest[1]] += 1
     return {"possession_frames": [possession[0], possession[1]],
             "stuck_s": [stuck_frames[0] / SAMPLES_PER_S, stuck_frames[1] / SAMPLES_PER_S],
-            "ball_moving_share": moving_samples / samples if samples else 0.0}
+            "ball_moving_share": moving_samples / samples if samples else 0.0,
+            "playing_share": playing_samples / samples if samples else 0.0}
 
 
 def ball_moving(path: list) -> bool:

@@ -167,6 +167,8 @@ def test_the_in_process_log_holds_what_the_world_says(tmp_path):
     # The statistics a sweep takes from a lockstep log come from this one too.
     stats = match_stats.analyse_log(log)
     assert sum(stats["possession_frames"]) > 0
+    assert 0 < stats["playing_share"] < 1  # the set-up states before kick-off are not play
+    assert stats["ball_moving_share"] <= stats["playing_share"]
     # Each robot's act of each frame, on its own channel, before the truth that frame ends in.
     for channel, team in (("TL_ACT_0_2", 0), ("TL_ACT_1_2", 1)):
         acts = [(i, act_t.decode(e.data)) for i, e in enumerate(events) if e.channel == channel]
