@@ -93,8 +93,24 @@ def _int16(low, high):
     return value - 0x10000 if value >= 0x8000 else value
 
 
+_decoded = {}  # message bytes -> its TeamInfo: a message is decoded once, however often read
+DECODED_KEEP = 64
+
+
 def decodeMessage(data):
-    """The TeamInfo in data, or None when it is not a message of this version and size."""
+    """The TeamInfo in data, or None when it is not a message of this version and size (shared
+    between calls for the same bytes: read it, do not change it)."""
+    info = _decoded.get(data, _decoded) if type(data) is bytes else _decoded
+    if info is _decoded:
+        info = _decodeMessage(data)
+        if type(data) is bytes:
+            if len(_decoded) >= DECODED_KEEP:
+                _decoded.clear()
+            _decoded[data] = info
+    return info
+
+
+def _decodeMessage(data):
     if len(data) != MESSAGE_SIZE or data[0] != MESSAGE_VERSION:
         return None
     flags = data[3]

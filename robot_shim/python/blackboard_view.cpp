@@ -132,6 +132,15 @@ PyObject* get_part(PyObject* self, void*) {
   return cached;
 }
 
+/// receiver.messages: a new list at every read, as any field, of message copies made at the
+/// first read and shared by the later ones (read-only objects: only `is` tells). The skills
+/// read it several times a tick.
+PyObject* get_messages(PyObject* self, void*) {
+  PyObject*& cached = as_view(self)->parts[0]; // a receiver view has no parts of its own
+  if (!cached && !(cached = get_field<&ReceiverBlackboard::messages>(self, nullptr))) return nullptr;
+  return PyList_GetSlice(cached, 0, PY_SSIZE_T_MAX);
+}
+
 #define TL_FIELD(Struct, name, doc) {#name, &get_field<&Struct::name>, nullptr, doc, nullptr}
 #define TL_PART(part, name) {#name, &get_part<part, &Blackboard::name>, nullptr, nullptr, nullptr}
 
@@ -178,7 +187,7 @@ PyGetSetDef g_game_controller_fields[] = {
     {nullptr, nullptr, nullptr, nullptr, nullptr}};
 
 PyGetSetDef g_receiver_fields[] = {
-    TL_FIELD(ReceiverBlackboard, messages, "each teammate's latest robot.TeamMessage, by player number (copies)"),
+    {"messages", &get_messages, nullptr, "each teammate's latest robot.TeamMessage, by player number (copies)", nullptr},
     {nullptr, nullptr, nullptr, nullptr, nullptr}};
 
 PyGetSetDef g_behaviour_fields[] = {
