@@ -1,4 +1,5 @@
 #include "touchline/python/blackboard_view.hpp"
+#include "touchline/python/fast_fields.hpp"
 
 #include <pybind11/stl.h>
 
@@ -94,7 +95,10 @@ PyObject* to_python(SetPlay v) { return enum_to_python(v, g_set_plays); }
 
 template <typename T>
 PyObject* to_python(const T& v) {
-  return py::cast(v, py::return_value_policy::copy).release().ptr();
+  if constexpr (std::is_class_v<T> && std::is_base_of_v<py::detail::type_caster_generic, py::detail::make_caster<T>>)
+    return fast_fields::cast_out(v, py::return_value_policy::copy); // a pybind11 class: no lookup by type
+  else
+    return py::cast(v, py::return_value_policy::copy).release().ptr();
 }
 
 template <typename>
