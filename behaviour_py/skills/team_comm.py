@@ -62,7 +62,8 @@ class TeamInfo:
 
 def roundMm(value, low, high):
     """value (mm) rounded half up and clamped into [low, high]."""
-    return min(max(int(math.floor(value + 0.5)), low), high)
+    value = math.floor(value + 0.5)  # an int; clamped as min(max(value, low), high) would
+    return low if low > value else high if high < value else value
 
 
 def makeTeamInfo(playerNumber, role, ballSeen, penalised, fallen, ballDistance, ballX, ballY, robotX=0.0, robotY=0.0):

@@ -232,8 +232,15 @@ void PythonBehaviour::activate() {
   // First on sys.path, so that a reload finds this directory's modules before others'.
   py::list path = py_->sys.attr("path");
   const py::str dir(def_.directory.string());
-  while (path.contains(dir)) path.attr("remove")(dir);
-  path.insert(0, dir);
+  // Most often it is first and nowhere else already (robots of one directory in turn).
+  PyObject* first = PyList_GET_SIZE(path.ptr()) > 0 ? PyList_GET_ITEM(path.ptr(), 0) : nullptr;
+  const bool placed = first && PyUnicode_Check(first) && PyUnicode_Compare(first, dir.ptr()) == 0 &&
+                      PySequence_Count(path.ptr(), dir.ptr()) == 1;
+  if (PyErr_Occurred()) throw py::error_already_set();
+  if (!placed) {
+    while (path.contains(dir)) path.attr("remove")(dir);
+    path.insert(0, dir);
+  }
   py_->modules_version = dict_version(modules);
   g_active = this;
 }
