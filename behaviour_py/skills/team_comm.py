@@ -95,7 +95,6 @@ def _int16(low, high):
 
 
 _decoded = {}  # message bytes -> its TeamInfo: a message is decoded once, however often read
-DECODED_KEEP = 64
 
 
 def decodeMessage(data):
@@ -105,7 +104,7 @@ def decodeMessage(data):
     if info is _decoded:
         info = _decodeMessage(data)
         if type(data) is bytes:
-            if len(_decoded) >= DECODED_KEEP:
+            if len(_decoded) >= 64:  # a few frames' messages: no need to keep more
                 _decoded.clear()
             _decoded[data] = info
     return info
