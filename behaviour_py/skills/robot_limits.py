@@ -14,7 +14,8 @@ MAX_HEAD_PITCH = 0.51   # rad, looking down
 
 
 def clamp(value, low, high):
-    return min(max(value, low), high)
+    value = low if low > value else value  # min(max(value, low), high), without the calls
+    return high if high < value else value
 
 
 def clampTurn(turn):

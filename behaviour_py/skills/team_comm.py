@@ -62,7 +62,8 @@ class TeamInfo:
 
 def roundMm(value, low, high):
     """value (mm) rounded half up and clamped into [low, high]."""
-    return min(max(int(math.floor(value + 0.5)), low), high)
+    value = math.floor(value + 0.5)  # an int; clamped as min(max(value, low), high) would
+    return low if low > value else high if high < value else value
 
 
 def makeTeamInfo(playerNumber, role, ballSeen, penalised, fallen, ballDistance, ballX, ballY, robotX=0.0, robotY=0.0):
@@ -93,8 +94,23 @@ def _int16(low, high):
     return value - 0x10000 if value >= 0x8000 else value
 
 
+_decoded = {}  # message bytes -> its TeamInfo: a message is decoded once, however often read
+
+
 def decodeMessage(data):
-    """The TeamInfo in data, or None when it is not a message of this version and size."""
+    """The TeamInfo in data, or None when it is not a message of this version and size (shared
+    between calls for the same bytes: read it, do not change it)."""
+    info = _decoded.get(data, _decoded) if type(data) is bytes else _decoded
+    if info is _decoded:
+        info = _decodeMessage(data)
+        if type(data) is bytes:
+            if len(_decoded) >= 64:  # a few frames' messages: no need to keep more
+                _decoded.clear()
+            _decoded[data] = info
+    return info
+
+
+def _decodeMessage(data):
     if len(data) != MESSAGE_SIZE or data[0] != MESSAGE_VERSION:
         return None
     flags = data[3]

@@ -1,4 +1,5 @@
 #include "touchline/python/blackboard_view.hpp"
+#include "touchline/python/fast_fields.hpp"
 
 #include <pybind11/stl.h>
 
@@ -94,7 +95,10 @@ PyObject* to_python(SetPlay v) { return enum_to_python(v, g_set_plays); }
 
 template <typename T>
 PyObject* to_python(const T& v) {
-  return py::cast(v, py::return_value_policy::copy).release().ptr();
+  if constexpr (std::is_class_v<T> && std::is_base_of_v<py::detail::type_caster_generic, py::detail::make_caster<T>>)
+    return fast_fields::cast_out(v, py::return_value_policy::copy); // a pybind11 class: no lookup by type
+  else
+    return py::cast(v, py::return_value_policy::copy).release().ptr();
 }
 
 template <typename>
@@ -130,6 +134,15 @@ PyObject* get_part(PyObject* self, void*) {
   }
   Py_INCREF(cached);
   return cached;
+}
+
+/// receiver.messages: a new list at every read, as any field, of message copies made at the
+/// first read and shared by the later ones (read-only objects: only `is` tells). The skills
+/// read it several times a tick.
+PyObject* get_messages(PyObject* self, void*) {
+  PyObject*& cached = as_view(self)->parts[0]; // a receiver view has no parts of its own
+  if (!cached && !(cached = get_field<&ReceiverBlackboard::messages>(self, nullptr))) return nullptr;
+  return PyList_GetSlice(cached, 0, PY_SSIZE_T_MAX);
 }
 
 #define TL_FIELD(Struct, name, doc) {#name, &get_field<&Struct::name>, nullptr, doc, nullptr}
@@ -178,7 +191,7 @@ PyGetSetDef g_game_controller_fields[] = {
     {nullptr, nullptr, nullptr, nullptr, nullptr}};
 
 PyGetSetDef g_receiver_fields[] = {
-    TL_FIELD(ReceiverBlackboard, messages, "each teammate's latest robot.TeamMessage, by player number (copies)"),
+    {"messages", &get_messages, nullptr, "each teammate's latest robot.TeamMessage, by player number (copies)", nullptr},
     {nullptr, nullptr, nullptr, nullptr, nullptr}};
 
 PyGetSetDef g_behaviour_fields[] = {

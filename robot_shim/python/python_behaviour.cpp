@@ -56,6 +56,17 @@ bool loaded_from(py::handle module, const std::string& prefix) {
   return false;
 }
 
+/// A dict's version tag (CPython 3.11: a global counter's value, new at every change of
+/// the dict), or 0 where there is none to read.
+uint64_t dict_version(py::handle dict) {
+#if PY_VERSION_HEX >= 0x030B0000 && PY_VERSION_HEX < 0x030C0000
+  return reinterpret_cast<PyDictObject*>(dict.ptr())->ma_version_tag;
+#else
+  (void)dict;
+  return 0;
+#endif
+}
+
 /// Names of the sys.modules entries loaded from under `prefix`.
 py::list module_names_under(const py::module_& sys, const std::string& prefix) {
   py::list names;
@@ -122,8 +133,12 @@ struct __attribute__((visibility("hidden"))) PythonBehaviour::Python {
   /// While it runs: the names it brought back, and every name in sys.modules as it did.
   /// Its modules are among those and the names added since, so stash() need not look at
   /// every module of the process (a scan of them all cost ~0.5 ms a swap, with numpy loaded).
-  py::list restored;
-  py::set names_at_activate;
+  /// The modules it brought back (name -> module) and sys.modules's keys, as they were.
+  py::dict restored;
+  py::list names_at_activate;
+  /// sys.modules's version tag after activate(): unchanged at stash(), the modules to take
+  /// out are exactly those brought back (no set of every name needed, the common case).
+  uint64_t modules_version = 0;
   py::object module, tick; ///< null while the module failed to load
 
   /// After the interpreter has gone, handles must be dropped without touching it.
@@ -207,8 +222,9 @@ void PythonBehaviour::activate() {
   py::dict modules = py_->sys.attr("modules");
   for (auto [name, module] : py_->stashed) modules[name] = module;
   modules["robot"] = py_->robot; // this behaviour's framework's `robot`
-  py_->restored = py::list(py_->stashed.attr("keys")());
-  py_->names_at_activate = py::set(modules);
+  py_->restored = std::move(py_->stashed);
+  py_->names_at_activate = py::reinterpret_steal<py::list>(PyDict_Keys(modules.ptr()));
+  if (!py_->names_at_activate) throw py::error_already_set();
   py_->stashed = py::dict();
   py_->robot.attr("params") = py_->params;
   py_->robot.attr("team") = def_.team;
@@ -216,21 +232,36 @@ void PythonBehaviour::activate() {
   // First on sys.path, so that a reload finds this directory's modules before others'.
   py::list path = py_->sys.attr("path");
   const py::str dir(def_.directory.string());
-  while (path.contains(dir)) path.attr("remove")(dir);
-  path.insert(0, dir);
+  // Most often it is first and nowhere else already (robots of one directory in turn).
+  PyObject* first = PyList_GET_SIZE(path.ptr()) > 0 ? PyList_GET_ITEM(path.ptr(), 0) : nullptr;
+  const bool placed = first && PyUnicode_Check(first) && PyUnicode_Compare(first, dir.ptr()) == 0 &&
+                      PySequence_Count(path.ptr(), dir.ptr()) == 1;
+  if (PyErr_Occurred()) throw py::error_already_set();
+  if (!placed) {
+    while (path.contains(dir)) path.attr("remove")(dir);
+    path.insert(0, dir);
+  }
+  py_->modules_version = dict_version(modules);
   g_active = this;
 }
 
 void PythonBehaviour::stash() {
   py::dict modules = py_->sys.attr("modules");
   // Its modules: those it brought back and those loaded since (imports, reloads) from its directory.
-  py::list candidates = py_->restored;
-  for (py::handle name : py::set(modules).attr("difference")(py_->names_at_activate)) candidates.append(name);
-  for (py::handle name : candidates)
-    if (modules.contains(name) && loaded_from(modules[name], prefix_))
-      py_->stashed[name] = modules.attr("pop")(name);
-  py_->restored = py::list();
-  py_->names_at_activate = py::set();
+  const uint64_t version = dict_version(modules);
+  if (version != 0 && version == py_->modules_version) { // untouched since activate()
+    for (auto [name, module] : py_->restored)
+      if (PyDict_DelItem(modules.ptr(), name.ptr()) != 0) throw py::error_already_set();
+    py_->stashed = std::move(py_->restored);
+  } else {
+    py::list candidates(py_->restored.attr("keys")());
+    for (py::handle name : py::set(modules).attr("difference")(py_->names_at_activate)) candidates.append(name);
+    for (py::handle name : candidates)
+      if (modules.contains(name) && loaded_from(modules[name], prefix_))
+        py_->stashed[name] = modules.attr("pop")(name);
+  }
+  py_->restored = py::dict();
+  py_->names_at_activate = py::list();
   g_active = nullptr;
 }
 

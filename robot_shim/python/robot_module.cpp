@@ -17,28 +17,57 @@ namespace {
 using namespace api;
 namespace AC = api::ActionCommand;
 
+/// toRobotRelative(robot, x, y) with an AbsCoord and two floats or ints, as pybind11 would
+/// compute it but without its dispatch (called for every obstacle every tick); any other
+/// call goes to pybind11's function, `fallback`, for its conversions and errors.
+PyObject* to_robot_relative(PyObject* fallback, PyObject* const* args, Py_ssize_t nargs, PyObject* kwnames) {
+  auto number = [](PyObject* v) { return PyFloat_CheckExact(v) || PyLong_CheckExact(v); };
+  const auto* abs_type = fast_fields::type_record<AbsCoord>();
+  if (nargs == 3 && !kwnames && abs_type && Py_TYPE(args[0]) == abs_type->type && number(args[1]) &&
+      number(args[2])) {
+    const AbsCoord* robot = fast_fields::held<AbsCoord>(args[0]);
+    if (!robot) return nullptr;
+    const double x = PyFloat_AsDouble(args[1]), y = PyFloat_AsDouble(args[2]);
+    if (!PyErr_Occurred())
+      return fast_fields::cast_out(toRobotRelative(*robot, static_cast<float>(x), static_cast<float>(y)),
+                                   py::return_value_policy::move);
+    PyErr_Clear(); // an int beyond a double: pybind11's error
+  }
+  return PyObject_Vectorcall(fallback, args, static_cast<size_t>(nargs), kwnames);
+}
+
 void define_geometry(py::module_& m) {
-  py::class_<AbsCoord>(m, "AbsCoord", "A field or odometry pose: x, y (mm), theta (rad)")
-      .def(py::init<>())
+  namespace ff = fast_fields;
+  py::class_<AbsCoord> abs(m, "AbsCoord", "A field or odometry pose: x, y (mm), theta (rad)");
+  abs.def(py::init<>())
       .def(py::init([](float x, float y, float theta) { return AbsCoord{x, y, theta}; }), py::arg("x"),
            py::arg("y"), py::arg("theta") = 0.f)
-      .def_readwrite("x", &AbsCoord::x)
-      .def_readwrite("y", &AbsCoord::y)
-      .def_readwrite("theta", &AbsCoord::theta)
       .def("__repr__", [](const AbsCoord& c) {
         return "AbsCoord(" + std::to_string(c.x) + ", " + std::to_string(c.y) + ", " + std::to_string(c.theta) + ")";
       });
-  py::class_<RRCoord>(m, "RRCoord", "Robot-relative position: distance (mm), heading (rad, + left)")
-      .def(py::init<>())
+  ff::remember_type<AbsCoord>();
+  ff::readwrite<&AbsCoord::x>(abs, "x");
+  ff::readwrite<&AbsCoord::y>(abs, "y");
+  ff::readwrite<&AbsCoord::theta>(abs, "theta");
+  py::class_<RRCoord> rr(m, "RRCoord", "Robot-relative position: distance (mm), heading (rad, + left)");
+  rr.def(py::init<>())
       .def(py::init([](float distance, float heading) { return RRCoord{distance, heading}; }),
-           py::arg("distance"), py::arg("heading"))
-      .def_readwrite("distance", &RRCoord::distance)
-      .def_readwrite("heading", &RRCoord::heading)
-      .def("x", &RRCoord::x, "forward component, mm")
-      .def("y", &RRCoord::y, "left component, mm");
+           py::arg("distance"), py::arg("heading"));
+  ff::remember_type<RRCoord>();
+  ff::readwrite<&RRCoord::distance>(rr, "distance");
+  ff::readwrite<&RRCoord::heading>(rr, "heading");
+  ff::getter_method<&RRCoord::x>(rr, "x", "forward component, mm");
+  ff::getter_method<&RRCoord::y>(rr, "y", "left component, mm");
   m.def("normaliseTheta", &normaliseTheta, "wraps an angle into [-pi, pi)");
   m.def("toRobotRelative", &toRobotRelative, py::arg("robot"), py::arg("x"), py::arg("y"),
         "robot-relative coordinates of the field point (x, y) seen from `robot`");
+  static PyMethodDef fast{"toRobotRelative", reinterpret_cast<PyCFunction>(reinterpret_cast<void (*)()>(&to_robot_relative)),
+                          METH_FASTCALL | METH_KEYWORDS,
+                          "toRobotRelative(robot, x, y): robot-relative coordinates of the field point (x, y) seen "
+                          "from `robot` (robot.AbsCoord)"};
+  PyObject* function = PyCFunction_NewEx(&fast, m.attr("toRobotRelative").ptr(), m.attr("__name__").ptr());
+  if (!function) throw py::error_already_set();
+  m.attr("toRobotRelative") = py::reinterpret_steal<py::object>(function);
 }
 
 void define_data(py::module_& m) {
@@ -130,10 +159,12 @@ void define_blackboard(py::module_& m) {
   fast_fields::fast_compare(set_play);
 
   py::class_<TeamMessage> message(m, "TeamMessage");
+  fast_fields::remember_type<TeamMessage>();
   fast_fields::readonly<&TeamMessage::playerNumber>(message, "playerNumber");
   fast_fields::readonly<&TeamMessage::utime>(message, "utime");
   fast_fields::readonly<&TeamMessage::data>(message, "data", "the message's bytes (a copy)");
   py::class_<SeenObject> seen(m, "SeenObject", "a goal post or robot the camera saw this frame");
+  fast_fields::remember_type<SeenObject>();
   fast_fields::readonly<&SeenObject::rr>(seen, "rr", "where, robot-relative (robot.RRCoord)");
   fast_fields::readonly<&SeenObject::id>(seen, "id", "posts: 0..3; robots: the player number");
   fast_fields::readonly<&SeenObject::teammate>(seen, "teammate", "robots: one of ours");

@@ -1,5 +1,7 @@
 """The `robot` module's game controller view: every state and set play under the
 GameController's own numbers, and an empty board's defaults."""
+import math
+
 import robot
 
 
@@ -67,3 +69,24 @@ def test_requests_are_built_field_by_field_and_take_no_constructor_arguments():
         except TypeError:
             continue
         raise AssertionError("accepted a wrong value")
+
+
+def test_geometry_reads_and_converts_as_pybind11_did():
+    pos = robot.AbsCoord(100.0, -50.0, 0.5)
+    fast = robot.toRobotRelative(pos, 1000.0, 700)  # floats and ints: the C fast path
+    slow = robot.toRobotRelative(robot=pos, x=1000.0, y=700.0)  # keywords: pybind11's function
+    assert (fast.distance, fast.heading) == (slow.distance, slow.heading)
+    assert abs(fast.distance - math.hypot(900.0, 750.0)) < 1e-3
+    assert abs(fast.heading - (math.atan2(750.0, 900.0) - 0.5)) < 1e-6
+    assert (fast.x(), fast.y()) == (slow.x(), slow.y())
+    assert abs(fast.x() - 900.0 * math.cos(0.5) - 750.0 * math.sin(0.5)) < 1e-2
+    pos.theta = 1  # fields write as C floats, ints included
+    assert (pos.x, pos.y, pos.theta) == (100.0, -50.0, 1.0)
+    for bad in (lambda: robot.toRobotRelative(pos, "1", 2.0), lambda: robot.toRobotRelative((0, 0, 0), 1.0, 2.0),
+                lambda: robot.toRobotRelative(pos, 1.0), lambda: robot.RRCoord.x(pos),
+                lambda: setattr(pos, "x", "far"), lambda: robot.toRobotRelative(pos, 10 ** 400, 1.0)):
+        try:
+            bad()
+        except TypeError:
+            continue
+        raise AssertionError("accepted a wrong argument")

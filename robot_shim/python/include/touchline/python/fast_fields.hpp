@@ -27,6 +27,10 @@ struct MemberOf<Type Struct::*> {
   using Owner = Struct;
   using Value = Type;
 };
+template <typename Struct, typename Type>
+struct MemberOf<Type (Struct::*)() const> {
+  using Owner = Struct;
+};
 
 /// The C++ object a pybind11 instance holds (the descriptor has checked its type); null
 /// with a Python error when it holds none (__init__ never ran).
@@ -36,6 +40,32 @@ T* held(PyObject* self) {
   void* value = inst->simple_layout ? inst->simple_value_holder[0] : inst->get_value_and_holder().value_ptr();
   if (!value) PyErr_Format(PyExc_TypeError, "%s instance was not initialised (__init__ not called)", Py_TYPE(self)->tp_name);
   return static_cast<T*>(value);
+}
+
+/// pybind11's record of T, set when its class is defined (again in a new interpreter).
+template <typename T>
+pybind11::detail::type_info*& type_record() {
+  static pybind11::detail::type_info* record = nullptr;
+  return record;
+}
+
+/// Keeps pybind11's record of T (a class just defined) for cast_out and fast_default_init.
+template <typename T>
+void remember_type() {
+  type_record<T>() = pybind11::detail::get_type_info(typeid(T));
+  if (!type_record<T>()) throw std::logic_error("remember_type before the class is defined");
+}
+
+/// pybind11::cast(&v, policy, parent) of a class T, without looking its record up by
+/// typeid at every call (pybind11's hash lookup) once remember_type<T>() has kept it.
+template <typename T>
+PyObject* cast_out(const T& v, pybind11::return_value_policy policy, PyObject* parent = nullptr) {
+  const pybind11::detail::type_info* record = type_record<T>();
+  if (!record) return pybind11::cast(&v, policy, parent).release().ptr();
+  return pybind11::detail::type_caster_generic::cast(
+             &v, policy, parent, record, [](const void* p) -> void* { return new T(*static_cast<const T*>(p)); },
+             nullptr)
+      .ptr();
 }
 
 inline PyObject* read(float v, PyObject*) { return PyFloat_FromDouble(static_cast<double>(v)); }
@@ -50,7 +80,7 @@ PyObject* read(const T& v, PyObject* owner) {
   if constexpr (std::is_enum_v<T>) {
     return pybind11::cast(v).release().ptr(); // a fresh enum instance
   } else { // a reference into the owner, which it keeps alive
-    return pybind11::cast(&v, pybind11::return_value_policy::reference_internal, owner).release().ptr();
+    return cast_out(v, pybind11::return_value_policy::reference_internal, owner);
   }
 }
 
@@ -146,13 +176,6 @@ void readwrite(Class& cls, const char* name, const char* doc = nullptr) {
 /// does (a new T held by the instance, registered with pybind11), for requests a behaviour
 /// builds several of every tick. A second __init__ on the same instance does nothing, as
 /// in pybind11.
-/// pybind11's record of T, set when its class is defined (again in a new interpreter).
-template <typename T>
-pybind11::detail::type_info*& type_record() {
-  static pybind11::detail::type_info* record = nullptr;
-  return record;
-}
-
 template <typename T>
 PyObject* default_init(PyObject* self, PyObject* args, PyObject* kwargs) {
   if (PyTuple_GET_SIZE(args) != 0 || (kwargs && PyDict_GET_SIZE(kwargs) != 0)) {
@@ -182,8 +205,7 @@ PyObject* default_init(PyObject* self, PyObject* args, PyObject* kwargs) {
 
 template <typename T, typename Class>
 void fast_default_init(Class& cls) {
-  type_record<T>() = pybind11::detail::get_type_info(typeid(T));
-  if (!type_record<T>()) throw std::logic_error("fast_default_init before the class is defined");
+  remember_type<T>();
   static PyMethodDef def{"__init__", reinterpret_cast<PyCFunction>(reinterpret_cast<void (*)()>(&default_init<T>)),
                          METH_VARARGS | METH_KEYWORDS, "a default request part"};
   PyObject* descriptor = PyDescr_NewMethod(reinterpret_cast<PyTypeObject*>(cls.ptr()), &def);
@@ -196,6 +218,23 @@ template <auto Member, typename Class>
 void readonly(Class& cls, const char* name, const char* doc = nullptr) {
   static PyGetSetDef def{name, &get<Member>, nullptr, doc, nullptr};
   PyObject* descriptor = PyDescr_NewGetSet(reinterpret_cast<PyTypeObject*>(cls.ptr()), &def);
+  if (!descriptor) throw pybind11::error_already_set();
+  cls.attr(name) = pybind11::reinterpret_steal<pybind11::object>(descriptor);
+}
+
+template <auto Method>
+PyObject* call_getter(PyObject* self, PyObject*) {
+  using Owner = typename MemberOf<decltype(Method)>::Owner;
+  const Owner* owner = held<Owner>(self);
+  return owner ? read((owner->*Method)(), self) : nullptr;
+}
+
+/// cls.name() for a const method without arguments returning a number, without pybind11's
+/// dispatch (RRCoord.x(): read for every obstacle every tick).
+template <auto Method, typename Class>
+void getter_method(Class& cls, const char* name, const char* doc = nullptr) {
+  static PyMethodDef def{name, &call_getter<Method>, METH_NOARGS, doc};
+  PyObject* descriptor = PyDescr_NewMethod(reinterpret_cast<PyTypeObject*>(cls.ptr()), &def);
   if (!descriptor) throw pybind11::error_already_set();
   cls.attr(name) = pybind11::reinterpret_steal<pybind11::object>(descriptor);
 }
