@@ -1,13 +1,17 @@
 """LineUpAndKick: approach the ball (GoToBall), line the kicking foot up behind it facing
 the goal with small steps, and kick (or dribble) once aligned.
 
-The foot is chosen on the ball's side when lining up starts and kept until it ends.
+The foot is chosen on the ball's side when lining up starts and kept until it ends. The aim
+may be off by KICK_FAR_ANGLE_TOLERANCE while the goal is far; while a robot (avoid.py's
+obstacles) is within CONTEST_DIST of the ball, the robot kicks at once wherever the kick gains
+ground (CONTEST_* tolerances) instead of lining up slowly under its feet.
 """
 import math
 
 import actioncommand
 import robot
 
+from .avoid import obstacles, remember
 from .ball import BEHIND_BALL_DIST, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, ballRecentlySeen
 from .go_to_ball import GoToBall
 from .go_to_pose import TURN_GAIN
@@ -16,14 +20,20 @@ from .robot_limits import clamp
 FOOT_OFFSET = 50.0                         # mm: each foot's centre left/right of the body centre
 KICK_BALL_X = 130.0                        # mm: ball centre ahead of the body centre to kick (toe 80 + radius 32.5 + gap)
 KICK_X_TOLERANCE = 40.0                    # mm
-KICK_Y_TOLERANCE = 25.0                    # mm: ball centre from the kicking foot's centre line
-KICK_ANGLE_TOLERANCE = math.radians(10)    # rad: heading error to the goal
+KICK_Y_TOLERANCE = 40.0                    # mm: ball centre from the kicking foot's centre line
+KICK_ANGLE_TOLERANCE = math.radians(10)    # rad: heading error to the goal ...
+KICK_FAR_DIST = 2500.0                     # mm: ... or, the ball farther than this from it, ...
+KICK_FAR_ANGLE_TOLERANCE = 0.45            # rad: ... this (the kick still gains ground)
+CONTEST_DIST = 500.0                       # mm: an obstacle this near the ball contests it: then ...
+CONTEST_ANGLE_TOLERANCE = 1.2              # rad: ... kick this far off the goal ...
+CONTEST_X_TOLERANCE = 80.0                 # mm: ... with the ball this far off the kicking spot ...
+CONTEST_Y_TOLERANCE = 70.0                 # mm: ... and the foot's line (the swing still meets it)
 LINE_UP_ENTER_DIST = 300.0                 # mm: start lining up when the ball is this close ...
 LINE_UP_ENTER_ANGLE = 0.6                  # rad: ... ahead, and the goal this well in line
 LINE_UP_LEAVE_DIST = 500.0                 # mm: back to approaching beyond this ...
 LINE_UP_LEAVE_ANGLE = 1.0                  # rad: ... or this far off
 LINE_UP_GAIN = 2.0                         # 1/s: step request (mm/s) per mm of error
-LINE_UP_MAX_SPEED = 100.0                  # mm/s: small steps, either axis
+LINE_UP_MAX_SPEED = 150.0                  # mm/s: small steps, either axis
 LINE_UP_MAX_TURN = 0.5                     # rad/s
 KICK_POWER = 1.0                           # default power of a kick ...
 DRIBBLE_POWER = 1.0                        # ... and of a dribble (about 1 m)
@@ -42,6 +52,9 @@ class LineUpAndKick:
         self.goToBall = GoToBall(goalX, goalY, BEHIND_BALL_DIST, policy)
         self.liningUp = False
         self.foot = robot.Foot.LEFT
+        self.seen = []  # the robots the camera saw (avoid.remember)
+        self.contested = False
+        self.aimTolerance = KICK_ANGLE_TOLERANCE  # this tick's: normal, far or contested
 
     def tick(self, blackboard):
         if not ballRecentlySeen(blackboard):
@@ -51,6 +64,12 @@ class LineUpAndKick:
         ball = blackboard.localisation.ballPos
         ballRR = robot.toRobotRelative(pos, ball.x, ball.y)
         aimError = robot.normaliseTheta(math.atan2(self.goalY - ball.y, self.goalX - ball.x) - pos.theta)
+        self.seen = remember(self.seen, blackboard)
+        self.contested = any(math.hypot(x - ballRR.x(), y - ballRR.y()) < CONTEST_DIST
+                             for x, y in obstacles(blackboard, self.seen))
+        far = math.hypot(self.goalX - ball.x, self.goalY - ball.y) > KICK_FAR_DIST
+        self.aimTolerance = (CONTEST_ANGLE_TOLERANCE if self.contested
+                             else KICK_FAR_ANGLE_TOLERANCE if far else KICK_ANGLE_TOLERANCE)
         self.updateLiningUp(ballRR, aimError)
         if not self.liningUp:
             return self.goToBall.tick(blackboard)
@@ -59,10 +78,10 @@ class LineUpAndKick:
     def updateLiningUp(self, ballRR, aimError):
         if self.liningUp:
             self.liningUp = (ballRR.distance < LINE_UP_LEAVE_DIST and abs(ballRR.heading) < LINE_UP_LEAVE_ANGLE
-                             and abs(aimError) < LINE_UP_LEAVE_ANGLE)
+                             and abs(aimError) < max(LINE_UP_LEAVE_ANGLE, self.aimTolerance))
             return
         self.liningUp = (ballRR.distance < LINE_UP_ENTER_DIST and abs(ballRR.heading) < LINE_UP_ENTER_ANGLE
-                         and abs(aimError) < LINE_UP_ENTER_ANGLE)
+                         and abs(aimError) < max(LINE_UP_ENTER_ANGLE, self.aimTolerance))
         if self.liningUp:
             self.foot = robot.Foot.LEFT if ballRR.y() >= 0.0 else robot.Foot.RIGHT
 
@@ -73,8 +92,9 @@ class LineUpAndKick:
         """Kick when the ball is in front of the foot and the goal ahead; else step closer."""
         xError = ballRR.x() - KICK_BALL_X
         yError = ballRR.y() - self.footY()
-        if (abs(xError) < KICK_X_TOLERANCE and abs(yError) < KICK_Y_TOLERANCE
-                and abs(aimError) < KICK_ANGLE_TOLERANCE):
+        xTolerance = CONTEST_X_TOLERANCE if self.contested else KICK_X_TOLERANCE
+        yTolerance = CONTEST_Y_TOLERANCE if self.contested else KICK_Y_TOLERANCE
+        if abs(xError) < xTolerance and abs(yError) < yTolerance and abs(aimError) < self.aimTolerance:
             if self.dribble:
                 return actioncommand.dribble(self.power, self.foot)
             return actioncommand.kick(self.power, self.foot)

@@ -2,7 +2,7 @@
 tests/behaviour_cpp/skills/test_line_up_and_kick.cpp."""
 import pytest
 import robot
-from boards import board, relative
+from boards import board, relative, seenRobot
 
 from skills.ball import BALL_LOST_FRAMES
 from skills.go_to_ball import GoToBall
@@ -31,29 +31,60 @@ def test_ball_in_front_of_the_right_foot_kicks_right():
 
 
 def test_not_facing_the_goal_turns_instead_of_kicking():
-    pos = (0.0, 0.0, 0.3)  # ball in front of the left foot, goal 0.33 rad to the right
+    pos = (1500.0, 0.0, 0.3)  # ball in front of the left foot, goal 0.36 rad to the right
     command = LineUpAndKick().tick(board(pos, ball=relative(pos, 130.0, 50.0)))
     assert command.body.actionType == WALK
     assert velocities(command) == pytest.approx((0.0, 0.0, -0.5), abs=1e-3)
 
 
+def test_far_from_the_goal_a_kick_off_its_line_is_taken():
+    pos = (0.0, 0.0, 0.3)  # the goal 3 km away, 0.33 rad to the right
+    body = LineUpAndKick().tick(board(pos, ball=relative(pos, 130.0, 50.0))).body
+    assert (body.actionType, body.foot) == (KICK, robot.Foot.LEFT)
+
+
+# The goal 1.04 rad to the right, the ball 60 mm beyond the kicking spot and 50 mm off the
+# left foot's line: an approach alone, a kick at once when a robot is near the ball.
+CONTEST_POS = (1500.0, 0.0, 0.9)
+
+
+def contest_board(**kwargs):
+    return board(CONTEST_POS, ball=relative(CONTEST_POS, 190.0, 100.0), **kwargs)
+
+
+def test_a_contested_ball_is_kicked_at_once_wherever_it_gains_ground():
+    alone = LineUpAndKick()
+    assert alone.tick(contest_board()).body.actionType == WALK
+    assert not alone.liningUp
+    far = contest_board(robots=[seenRobot(1200.0, 0.0)])  # over 500 mm from the ball
+    assert LineUpAndKick().tick(far).body.actionType == WALK
+    contested = LineUpAndKick()
+    body = contested.tick(contest_board(robots=[seenRobot(450.0, 120.0)])).body  # across the ball
+    assert contested.contested
+    assert (body.actionType, body.foot) == (KICK, robot.Foot.LEFT)
+
+
+def test_a_robot_the_sonar_finds_at_the_ball_contests_it():
+    body = LineUpAndKick().tick(contest_board(sonar=(0.4, 1.0))).body  # 400 mm ahead
+    assert body.actionType == KICK
+
+
 def test_ball_too_far_takes_small_steps():
     command = LineUpAndKick().tick(board(ORIGIN, ball=(250.0, 40.0)))
     assert command.body.actionType == WALK
-    assert velocities(command) == pytest.approx((100.0, -20.0, -0.02909), abs=1e-3)
+    assert velocities(command) == pytest.approx((150.0, -20.0, -0.02909), abs=1e-3)
 
 
 def test_foot_is_kept_while_lining_up():
     skill = LineUpAndKick()
     skill.tick(board(ORIGIN, ball=(250.0, 40.0)))
     assert skill.foot == robot.Foot.LEFT
-    command = skill.tick(board(ORIGIN, ball=(130.0, -10.0)))  # now right of centre: left foot still
+    command = skill.tick(board(ORIGIN, ball=(130.0, -20.0)))  # now right of centre: left foot still
     assert skill.foot == robot.Foot.LEFT
-    assert velocities(command) == pytest.approx((0.0, -100.0, 0.00697), abs=1e-3)
+    assert velocities(command) == pytest.approx((0.0, -140.0, 0.01394), abs=1e-3)
     fresh = LineUpAndKick()
-    command = fresh.tick(board(ORIGIN, ball=(130.0, -10.0)))
-    assert fresh.foot == robot.Foot.RIGHT
-    assert velocities(command) == pytest.approx((0.0, 80.0, 0.00697), abs=1e-3)
+    body = fresh.tick(board(ORIGIN, ball=(130.0, -20.0))).body
+    assert (fresh.foot, body.actionType, body.foot) == (robot.Foot.RIGHT, KICK, robot.Foot.RIGHT)
 
 
 def test_far_ball_approaches_like_go_to_ball():

@@ -1,5 +1,6 @@
 #include "touchline/behaviour/skills/line_up_and_kick.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "touchline/behaviour/skills/actioncommand.hpp"
@@ -27,6 +28,12 @@ ActionCommand::All LineUpAndKick::tick(const Blackboard& blackboard) {
   const AbsCoord ball = blackboard.localisation.ballPos;
   const RRCoord ballRR = toRobotRelative(pos, ball.x, ball.y);
   const float aimError = normaliseTheta(std::atan2(goalY_ - ball.y, goalX_ - ball.x) - pos.theta);
+  seen_ = remember(seen_, blackboard);
+  contested_ = false;
+  for (const Obstacle& o : obstacles(blackboard, seen_))
+    contested_ = contested_ || std::hypot(o.x - ballRR.x(), o.y - ballRR.y()) < CONTEST_DIST;
+  const bool far = std::hypot(goalX_ - ball.x, goalY_ - ball.y) > KICK_FAR_DIST;
+  aimTolerance_ = contested_ ? CONTEST_ANGLE_TOLERANCE : far ? KICK_FAR_ANGLE_TOLERANCE : KICK_ANGLE_TOLERANCE;
   updateLiningUp(ballRR, aimError);
   if (!liningUp_) return goToBall_.tick(blackboard);
   return actioncommand::compose({}, lineUp(ballRR, aimError));
@@ -35,11 +42,11 @@ ActionCommand::All LineUpAndKick::tick(const Blackboard& blackboard) {
 void LineUpAndKick::updateLiningUp(const RRCoord& ballRR, float aimError) {
   if (liningUp_) {
     liningUp_ = ballRR.distance < LINE_UP_LEAVE_DIST && std::fabs(ballRR.heading) < LINE_UP_LEAVE_ANGLE &&
-                std::fabs(aimError) < LINE_UP_LEAVE_ANGLE;
+                std::fabs(aimError) < std::max(LINE_UP_LEAVE_ANGLE, aimTolerance_);
     return;
   }
   liningUp_ = ballRR.distance < LINE_UP_ENTER_DIST && std::fabs(ballRR.heading) < LINE_UP_ENTER_ANGLE &&
-              std::fabs(aimError) < LINE_UP_ENTER_ANGLE;
+              std::fabs(aimError) < std::max(LINE_UP_ENTER_ANGLE, aimTolerance_);
   if (liningUp_) foot_ = ballRR.y() >= 0.f ? ActionCommand::Foot::LEFT : ActionCommand::Foot::RIGHT;
 }
 
@@ -48,8 +55,9 @@ float LineUpAndKick::footY() const { return foot_ == ActionCommand::Foot::LEFT ?
 ActionCommand::Body LineUpAndKick::lineUp(const RRCoord& ballRR, float aimError) const {
   const float xError = ballRR.x() - KICK_BALL_X;
   const float yError = ballRR.y() - footY();
-  if (std::fabs(xError) < KICK_X_TOLERANCE && std::fabs(yError) < KICK_Y_TOLERANCE &&
-      std::fabs(aimError) < KICK_ANGLE_TOLERANCE) {
+  const float xTolerance = contested_ ? CONTEST_X_TOLERANCE : KICK_X_TOLERANCE;
+  const float yTolerance = contested_ ? CONTEST_Y_TOLERANCE : KICK_Y_TOLERANCE;
+  if (std::fabs(xError) < xTolerance && std::fabs(yError) < yTolerance && std::fabs(aimError) < aimTolerance_) {
     if (dribble_) return actioncommand::dribble(power_, foot_);
     return actioncommand::kick(power_, foot_);
   }

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "boards.hpp"
 
 using namespace touchline::api;
@@ -41,30 +43,76 @@ TEST(LineUpAndKickSkill, BallInFrontOfTheRightFootKicksRight) {
 }
 
 TEST(LineUpAndKickSkill, NotFacingTheGoalTurnsInsteadOfKicking) {
-  const AbsCoord pos{0.f, 0.f, 0.3f}; // ball in front of the left foot, goal 0.33 rad to the right
+  const AbsCoord pos{1500.f, 0.f, 0.3f}; // ball in front of the left foot, goal 0.36 rad to the right
   const auto [x, y] = relative(pos, 130.f, 50.f);
   const auto command = LineUpAndKick().tick(board(pos, x, y));
   EXPECT_EQ(command.body.actionType, ActionType::WALK);
   expectVelocities(command, 0.f, 0.f, -0.5f);
 }
 
+TEST(LineUpAndKickSkill, FarFromTheGoalAKickOffItsLineIsTaken) {
+  const AbsCoord pos{0.f, 0.f, 0.3f}; // the goal 3 km away, 0.33 rad to the right
+  const auto [x, y] = relative(pos, 130.f, 50.f);
+  const auto body = LineUpAndKick().tick(board(pos, x, y)).body;
+  EXPECT_EQ(body.actionType, ActionType::KICK);
+  EXPECT_EQ(body.foot, Foot::LEFT);
+}
+
+namespace {
+
+// The goal 1.04 rad to the right, the ball 60 mm beyond the kicking spot and 50 mm off the
+// left foot's line: an approach alone, a kick at once when a robot is near the ball.
+Blackboard contestBoard() {
+  const AbsCoord pos{1500.f, 0.f, 0.9f};
+  const auto [x, y] = relative(pos, 190.f, 100.f);
+  return board(pos, x, y);
+}
+
+SeenObject seenRobot(float forward, float left) {
+  return {{std::hypot(forward, left), std::atan2(left, forward)}, 5, false};
+}
+
+} // namespace
+
+TEST(LineUpAndKickSkill, AContestedBallIsKickedAtOnceWhereverItGainsGround) {
+  Blackboard blackboard = contestBoard();
+  LineUpAndKick alone;
+  EXPECT_EQ(alone.tick(blackboard).body.actionType, ActionType::WALK);
+  EXPECT_FALSE(alone.liningUp());
+  blackboard.vision.robots = {seenRobot(1200.f, 0.f)}; // over 500 mm from the ball
+  EXPECT_EQ(LineUpAndKick().tick(blackboard).body.actionType, ActionType::WALK);
+  blackboard.vision.robots = {seenRobot(450.f, 120.f)}; // across the ball
+  LineUpAndKick contested;
+  const auto body = contested.tick(blackboard).body;
+  EXPECT_TRUE(contested.contested());
+  EXPECT_EQ(body.actionType, ActionType::KICK);
+  EXPECT_EQ(body.foot, Foot::LEFT);
+}
+
+TEST(LineUpAndKickSkill, ARobotTheSonarFindsAtTheBallContestsIt) {
+  Blackboard blackboard = contestBoard();
+  blackboard.motion.sonarLeft = 0.4f; // 400 mm ahead
+  EXPECT_EQ(LineUpAndKick().tick(blackboard).body.actionType, ActionType::KICK);
+}
+
 TEST(LineUpAndKickSkill, BallTooFarTakesSmallSteps) {
   const auto command = LineUpAndKick().tick(ballAt(250.f, 40.f));
   EXPECT_EQ(command.body.actionType, ActionType::WALK);
-  expectVelocities(command, 100.f, -20.f, -0.02909f);
+  expectVelocities(command, 150.f, -20.f, -0.02909f);
 }
 
 TEST(LineUpAndKickSkill, FootIsKeptWhileLiningUp) {
   LineUpAndKick skill;
   skill.tick(ballAt(250.f, 40.f));
   EXPECT_EQ(skill.foot(), Foot::LEFT);
-  const auto command = skill.tick(ballAt(130.f, -10.f)); // now right of centre: left foot still
+  const auto command = skill.tick(ballAt(130.f, -20.f)); // now right of centre: left foot still
   EXPECT_EQ(skill.foot(), Foot::LEFT);
-  expectVelocities(command, 0.f, -100.f, 0.00697f);
+  expectVelocities(command, 0.f, -140.f, 0.01394f);
   LineUpAndKick fresh;
-  const auto freshCommand = fresh.tick(ballAt(130.f, -10.f));
+  const auto freshBody = fresh.tick(ballAt(130.f, -20.f)).body;
   EXPECT_EQ(fresh.foot(), Foot::RIGHT);
-  expectVelocities(freshCommand, 0.f, 80.f, 0.00697f);
+  EXPECT_EQ(freshBody.actionType, ActionType::KICK);
+  EXPECT_EQ(freshBody.foot, Foot::RIGHT);
 }
 
 TEST(LineUpAndKickSkill, FarBallApproachesLikeGoToBall) {

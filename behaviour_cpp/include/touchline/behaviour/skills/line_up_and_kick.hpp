@@ -1,11 +1,17 @@
 #pragma once
 // LineUpAndKick: approach the ball (GoToBall), line the kicking foot up behind it facing the
 // goal with small steps, and kick (or dribble) once aligned. The foot is chosen on the
-// ball's side when lining up starts and kept until it ends. The port of
+// ball's side when lining up starts and kept until it ends. The aim may be off by
+// KICK_FAR_ANGLE_TOLERANCE while the goal is far; while a robot (avoid.hpp's obstacles) is
+// within CONTEST_DIST of the ball, the robot kicks at once wherever the kick gains ground
+// (CONTEST_* tolerances) instead of lining up slowly under its feet. The port of
 // behaviour_py/skills/line_up_and_kick.py.
 #include <optional>
 #include <string>
 
+#include <vector>
+
+#include "touchline/behaviour/skills/avoid.hpp"
 #include "touchline/behaviour/skills/ball.hpp"
 #include "touchline/behaviour/skills/go_to_ball.hpp"
 
@@ -14,14 +20,20 @@ namespace touchline::behaviour::skills {
 inline constexpr float FOOT_OFFSET = 50.f;           ///< mm: each foot's centre left/right of the body centre
 inline constexpr float KICK_BALL_X = 130.f;          ///< mm: ball centre ahead of the body centre to kick (toe 80 + radius 32.5 + gap)
 inline constexpr float KICK_X_TOLERANCE = 40.f;      ///< mm
-inline constexpr float KICK_Y_TOLERANCE = 25.f;      ///< mm: ball centre from the kicking foot's centre line
-inline constexpr float KICK_ANGLE_TOLERANCE = 10.f * api::kPi / 180.f; ///< rad: heading error to the goal
+inline constexpr float KICK_Y_TOLERANCE = 40.f;      ///< mm: ball centre from the kicking foot's centre line
+inline constexpr float KICK_ANGLE_TOLERANCE = 10.f * api::kPi / 180.f; ///< rad: heading error to the goal ...
+inline constexpr float KICK_FAR_DIST = 2500.f;       ///< mm: ... or, the ball farther than this from it, ...
+inline constexpr float KICK_FAR_ANGLE_TOLERANCE = 0.45f; ///< rad: ... this (the kick still gains ground)
+inline constexpr float CONTEST_DIST = 500.f;         ///< mm: an obstacle this near the ball contests it: then ...
+inline constexpr float CONTEST_ANGLE_TOLERANCE = 1.2f; ///< rad: ... kick this far off the goal ...
+inline constexpr float CONTEST_X_TOLERANCE = 80.f;   ///< mm: ... with the ball this far off the kicking spot ...
+inline constexpr float CONTEST_Y_TOLERANCE = 70.f;   ///< mm: ... and the foot's line (the swing still meets it)
 inline constexpr float LINE_UP_ENTER_DIST = 300.f;   ///< mm: start lining up when the ball is this close ...
 inline constexpr float LINE_UP_ENTER_ANGLE = 0.6f;   ///< rad: ... ahead, and the goal this well in line
 inline constexpr float LINE_UP_LEAVE_DIST = 500.f;   ///< mm: back to approaching beyond this ...
 inline constexpr float LINE_UP_LEAVE_ANGLE = 1.0f;   ///< rad: ... or this far off
 inline constexpr float LINE_UP_GAIN = 2.f;           ///< 1/s: step request (mm/s) per mm of error
-inline constexpr float LINE_UP_MAX_SPEED = 100.f;    ///< mm/s: small steps, either axis
+inline constexpr float LINE_UP_MAX_SPEED = 150.f;    ///< mm/s: small steps, either axis
 inline constexpr float LINE_UP_MAX_TURN = 0.5f;      ///< rad/s
 inline constexpr float KICK_POWER = 1.f;             ///< default power of a kick ...
 inline constexpr float DRIBBLE_POWER = 1.0f;         ///< ... and of a dribble (about 1 m)
@@ -36,6 +48,8 @@ class LineUpAndKick : public api::Behaviour {
   api::ActionCommand::All tick(const api::Blackboard& blackboard) override;
 
   bool liningUp() const { return liningUp_; }
+  /// Whether the last tick found a robot within CONTEST_DIST of the ball.
+  bool contested() const { return contested_; }
   api::ActionCommand::Foot foot() const { return foot_; }
   float power() const { return power_; }
 
@@ -51,6 +65,9 @@ class LineUpAndKick : public api::Behaviour {
   GoToBall goToBall_;
   bool liningUp_ = false;
   api::ActionCommand::Foot foot_ = api::ActionCommand::Foot::LEFT;
+  std::vector<Sighting> seen_; ///< the robots the camera saw (remember())
+  bool contested_ = false;
+  float aimTolerance_ = KICK_ANGLE_TOLERANCE; ///< this tick's: normal, far or contested
 };
 
 } // namespace touchline::behaviour::skills
