@@ -68,6 +68,8 @@ RefereeDecision Referee::update(const RefereeInput& in) {
   if (state_ == GameState::kPlaying) {
     if (rules_.illegal_defender) check_illegal_defenders(in.utime, robots, d);
     check_collisions(in.utime, in.ball, robots, d);
+  } else {
+    contact_since_utime_.clear(); // a stoppage ends every contact: the next PLAYING times afresh
   }
   for (const RobotPlacement& p : d.placements) tracks_.erase(p.robot); // picked up: its walk starts again
   return d;

@@ -247,6 +247,27 @@ TEST_F(WalkingInto, APlacementIsNoWalk) {
   EXPECT_TRUE(play(kKickOffS + 2, 1, creep).empty()); // in contact from 0.33 s on
 }
 
+TEST_F(WalkingInto, AStoppageEndsTheContactsTiming) {
+  // Blue 2 walks into red 2 for the last 0.25 s of the first half and stands through the
+  // break; in the second half it walks on: the contact is timed from the second half's
+  // PLAYING (702 s), not from before the break.
+  rules.game_stuck_s = 0;
+  rules.manual_placement = false;
+  put_robot(kRed2, -50.f, 1500.f, 0.f);
+  put_robot(kBlue2, 400.f, 1500.f, kPi);
+  start_playing();
+  update_at(650);
+  play(650, 1, [&](double t) { put_robot(kBlue2, 400.f - 200.f * float(t), 1500.f, kPi); }); // to 200 mm
+  ASSERT_NE(ref().state(), GameState::kPlaying);
+  for (double s : {660.0, 700.0, 701.9}) EXPECT_TRUE(update_at(s).penalties.empty());
+  const auto given = play(701.9, 3, [&](double t) {
+    put_robot(kBlue2, std::max(100.f, 200.f - 100.f * float(std::max(0.0, t - 0.1))), 1500.f, kPi);
+  });
+  ASSERT_EQ(given.size(), 1u);
+  EXPECT_EQ(given[0].robot, kBlue2);
+  EXPECT_GE(given[0].since_utime, at_s(702.95)); // a second into the second half
+}
+
 TEST_F(Pushing, ACrashedRobotIsNotPenalised) {
   put_robot(kRed2, 0.f, 1000.f, 0.f, /*active=*/false);
   start_playing();
