@@ -3,8 +3,9 @@
 event log (TL_EVENT), the pair's motion before the call, from TL_TRUTH. Reads logs; writes
 one JSON line per call (--calls) and a summary of the distribution to stdout.
 
-For each call: the victim is the pusher's nearest opponent within CONTACT_MM (as the match
-picks the robot that may fall); over the WINDOWS_S before the call, each robot's speed
+For each call, judged on the truth frame before it (the call's own frame already shows the
+pusher on its bench): the victim is the pusher's nearest opponent (as the match picks the
+robot that may fall); over each of WINDOWS_S before the call, each robot's speed
 towards the other (its body's displacement along the line from it to the other, divided
 by the window: + walking into the other, - backing away), both robots' distances to the
 ball, and how long the pair had been in contact (body centres closer than CONTACT_MM) when
@@ -100,7 +101,7 @@ def analyse(log: Path) -> list[dict]:
                     "victim_ball_mm": math.hypot(v.body.x_mm - last.ball_x_mm, v.body.y_mm - last.ball_y_mm)}
             pair = tuple(sorted([pkey, vkey]))
             since = contact_before.get(pair)
-            # None: not in contact a frame before the call (contact began in the judged frame).
+            # 0: not in contact a frame before the call (the contact began in the judged frame).
             call["contact_s"] = (last.utime - since) * 1e-6 if since is not None else 0.0
             hp = [s for s in history.get(pkey, []) if s[0] <= last.utime]
             hv = [s for s in history.get(vkey, []) if s[0] <= last.utime]
@@ -130,7 +131,7 @@ def summarise(calls: list) -> None:
     print("distance between bodies, mm:", quantiles([c["distance_mm"] for c in calls]))
     print("pusher to ball, mm:", quantiles([c["pusher_ball_mm"] for c in calls]))
     print("victim to ball, mm:", quantiles([c["victim_ball_mm"] for c in calls]))
-    print("contact before the call, ms:", quantiles([c["contact_s"] * 1e3 for c in calls if c["contact_s"] is not None]))
+    print("contact before the call, ms:", quantiles([c["contact_s"] * 1e3 for c in calls]))
     for w in WINDOWS_S:
         print(f"pusher towards victim over {w} s, mm/s:", quantiles([c[f"pusher_towards_{w}"] for c in calls]))
         print(f"victim towards pusher over {w} s, mm/s:", quantiles([c[f"victim_towards_{w}"] for c in calls]))

@@ -25,7 +25,7 @@ void bind(IniSchema& s, RulesDef& d) {
       .bind("rules.pushing_cooldown_s", &d.pushing_cooldown_s, "no second pushing penalty from a pair, s")
       .bind("rules.pushing_model", &d.pushing_model,
             "who pushes: thesis (headings alone) or walking_into (the robot walking into the other)")
-      .bind("rules.pushing_speed_mm_s", &d.pushing_speed_mm_s, "walking_into: body speed towards the other above this, mm/s")
+      .bind("rules.pushing_speed_mm_s", &d.pushing_speed_mm_s, "walking_into: speed towards the other above this, mm/s")
       .bind("rules.pushing_window_s", &d.pushing_window_s, "walking_into: body velocity over this long, s")
       .bind("rules.pushing_min_contact_s", &d.pushing_min_contact_s, "walking_into: contact this long is a foul, s")
       .bind("rules.leave_field_margin_mm", &d.leave_field_margin_mm, "body past a line by more has left, mm")
