@@ -52,4 +52,23 @@ CollisionVerdict judge_collision(const CollisionDef& def, const Pose2D& a, const
   return verdict;
 }
 
+float speed_towards(const Pose2D& from, const BodyVelocity& v, const Pose2D& to) {
+  const float dx = to.x_mm - from.x_mm, dy = to.y_mm - from.y_mm;
+  const float d = std::hypot(dx, dy);
+  if (d <= 0.f) return 0.f; // on top of each other: no direction to walk in
+  return (v.x_mm_s * dx + v.y_mm_s * dy) / d;
+}
+
+int walking_pusher(const CollisionVerdict& verdict, const Pose2D& a, const BodyVelocity& va, const Pose2D& b,
+                   const BodyVelocity& vb, float walking_into_mm_s) {
+  if (verdict.kind != Collision::kPushing) return -1;
+  const bool a_walks_in = speed_towards(a, va, b) > walking_into_mm_s;
+  const bool b_walks_in = speed_towards(b, vb, a) > walking_into_mm_s;
+  const bool thesis_walks_in = verdict.pusher == 0 ? a_walks_in : b_walks_in;
+  const bool other_walks_in = verdict.pusher == 0 ? b_walks_in : a_walks_in;
+  if (thesis_walks_in) return verdict.pusher;
+  if (other_walks_in) return 1 - verdict.pusher;
+  return -1;
+}
+
 } // namespace touchline::sim

@@ -51,6 +51,7 @@ RefereeDecision Referee::update(const RefereeInput& in) {
   std::sort(robots.begin(), robots.end(),
             [](const RobotOnField& a, const RobotOnField& b) { return a.id < b.id; });
 
+  record_tracks(in.utime, robots);
   release_served(in.utime, in.ball, robots, d);
   run_clock(in.utime, in.ball, robots, d);
 
@@ -67,7 +68,10 @@ RefereeDecision Referee::update(const RefereeInput& in) {
   if (state_ == GameState::kPlaying) {
     if (rules_.illegal_defender) check_illegal_defenders(in.utime, robots, d);
     check_collisions(in.utime, in.ball, robots, d);
+  } else {
+    contact_since_utime_.clear(); // a stoppage ends every contact: the next PLAYING times afresh
   }
+  for (const RobotPlacement& p : d.placements) tracks_.erase(p.robot); // picked up: its walk starts again
   return d;
 }
 

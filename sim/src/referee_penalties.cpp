@@ -53,13 +53,59 @@ void Referee::check_illegal_defenders(int64_t now, const Robots& robots, Referee
   }
 }
 
+void Referee::record_tracks(int64_t now, const Robots& robots) {
+  const int64_t window_us = detail::to_us(rules_.pushing_window_s);
+  for (const RobotOnField& r : robots) {
+    auto& track = tracks_[r.id];
+    track.emplace_back(now, r.body);
+    // Keep the newest pose at or before the window's start (the velocity's base) and after it.
+    while (track.size() >= 2 && track[1].first <= now - window_us) track.pop_front();
+  }
+}
+
+BodyVelocity Referee::velocity_of(const RobotOnField& r, int64_t now, const RefereeDecision& d) const {
+  for (const RobotPlacement& p : d.placements)
+    if (p.robot == r.id) return {};
+  const auto track = tracks_.find(r.id);
+  if (track == tracks_.end() || track->second.empty()) return {};
+  const auto& [since, from] = track->second.front();
+  if (since >= now) return {};
+  const float dt_s = static_cast<float>(static_cast<double>(now - since) * 1e-6);
+  return {(r.body.x_mm - from.x_mm) / dt_s, (r.body.y_mm - from.y_mm) / dt_s};
+}
+
+int Referee::judge_walking_into(int64_t now, const RobotOnField& a, const RobotOnField& b, const CollisionVerdict& v,
+                                const RefereeDecision& d) const {
+  const auto since = contact_since_utime_.find(std::make_pair(a.id, b.id));
+  if (since == contact_since_utime_.end() || now - since->second < detail::to_us(rules_.pushing_min_contact_s))
+    return -1;
+  return walking_pusher(v, a.body, velocity_of(a, now, d), b.body, velocity_of(b, now, d), rules_.pushing_speed_mm_s);
+}
+
 // Thesis 2.2.4 for every pair of robots on the field. Contesting the ball is no foul: the
 // robot farther from it is reported stopped. Pushing an opponent is penalised, the pusher
-// taken off; the pair then gives no other pushing penalty for pushing_cooldown_s, so one
+// taken off (rules.pushing_model: the robot the thesis names, or the one walking into the
+// other); the pair then gives no other pushing penalty for pushing_cooldown_s, so one
 // collision gives one penalty even if the match moves robots a frame late or contact
 // distance flickers as feet step. Teammates pushing each other is no foul (SPL penalises
 // pushing an opponent).
 void Referee::check_collisions(int64_t now, const BallTruth& ball, const Robots& robots, RefereeDecision& d) {
+  // Contacts between opponents, timed from their first frame (pushing_min_contact_s).
+  std::map<std::pair<RobotId, RobotId>, int64_t> contacts;
+  for (size_t i = 0; i < robots.size(); ++i)
+    for (size_t j = i + 1; j < robots.size(); ++j) {
+      const RobotOnField& a = robots[i];
+      const RobotOnField& b = robots[j];
+      if (a.id.team == b.id.team || penalised(a.id) || penalised(b.id)) continue;
+      if (std::hypot(a.body.x_mm - b.body.x_mm, a.body.y_mm - b.body.y_mm) >= rules_.collision.contact_distance_mm)
+        continue;
+      const auto key = std::make_pair(a.id, b.id);
+      const auto before = contact_since_utime_.find(key);
+      contacts[key] = before == contact_since_utime_.end() ? now : before->second;
+    }
+  contact_since_utime_.swap(contacts);
+
+  const bool walking_into = rules_.pushing_model == "walking_into";
   for (size_t i = 0; i < robots.size(); ++i) {
     for (size_t j = i + 1; j < robots.size(); ++j) {
       const RobotOnField& a = robots[i];
@@ -74,7 +120,9 @@ void Referee::check_collisions(int64_t now, const BallTruth& ball, const Robots&
         continue;
       }
       if (a.id.team == b.id.team || !rules_.pushing) continue;
-      const RobotOnField& pusher = v.pusher == 0 ? a : b;
+      const int pusher_index = walking_into ? judge_walking_into(now, a, b, v, d) : v.pusher;
+      if (pusher_index < 0) continue;
+      const RobotOnField& pusher = pusher_index == 0 ? a : b;
       if (!pusher.active) continue;
       const auto key = std::make_pair(a.id, b.id); // robots are sorted: a.id < b.id
       const auto last = last_push_utime_.find(key);

@@ -23,6 +23,11 @@ void bind(IniSchema& s, RulesDef& d) {
       .bind("rules.contact_distance_mm", &d.collision.contact_distance_mm, "bodies closer have collided, mm")
       .bind("rules.contest_distance_mm", &d.collision.contest_distance_mm, "both this near the ball: contesting, mm")
       .bind("rules.pushing_cooldown_s", &d.pushing_cooldown_s, "no second pushing penalty from a pair, s")
+      .bind("rules.pushing_model", &d.pushing_model,
+            "who pushes: thesis (headings alone) or walking_into (the robot walking into the other)")
+      .bind("rules.pushing_speed_mm_s", &d.pushing_speed_mm_s, "walking_into: speed towards the other above this, mm/s")
+      .bind("rules.pushing_window_s", &d.pushing_window_s, "walking_into: body velocity over this long, s")
+      .bind("rules.pushing_min_contact_s", &d.pushing_min_contact_s, "walking_into: contact this long is a foul, s")
       .bind("rules.leave_field_margin_mm", &d.leave_field_margin_mm, "body past a line by more has left, mm")
       .bind("rules.manual_placement", &d.manual_placement, "place robots not in legal positions at SET")
       .bind("rules.ball_out", &d.ball_out, "put back a ball that left the field")
@@ -46,6 +51,11 @@ void validate(const RulesDef& d) {
   require_positive("rules.contact_distance_mm", d.collision.contact_distance_mm);
   require_positive("rules.contest_distance_mm", d.collision.contest_distance_mm);
   require_non_negative("rules.pushing_cooldown_s", d.pushing_cooldown_s);
+  if (d.pushing_model != "thesis" && d.pushing_model != "walking_into")
+    config_fail("rules.pushing_model", "thesis or walking_into", "'" + d.pushing_model + "'");
+  require_non_negative("rules.pushing_speed_mm_s", d.pushing_speed_mm_s);
+  require_positive("rules.pushing_window_s", d.pushing_window_s, 10.f);
+  require_non_negative("rules.pushing_min_contact_s", d.pushing_min_contact_s);
   require_non_negative("rules.leave_field_margin_mm", d.leave_field_margin_mm);
   require_non_negative("rules.ball_out_setback_mm", d.ball_out_setback_mm);
   require_non_negative("rules.ball_out_inset_mm", d.ball_out_inset_mm);

@@ -48,3 +48,45 @@ TEST(Collision, FacingEachOtherAwayFromTheBallTheSquarerWalkerPushes) {
   EXPECT_FALSE(v.same_way);
   EXPECT_EQ(v.pusher, 0);
 }
+
+// --- walking into (rules.pushing_model = walking_into) ----------------------------------
+
+TEST(Collision, SpeedTowardsIsTheVelocityAlongTheLineToTheOther) {
+  const Pose2D a{0, 0, 0}, b{200, 0, kPi};
+  EXPECT_FLOAT_EQ(sim::speed_towards(a, {150, 0}, b), 150);   // straight at b
+  EXPECT_FLOAT_EQ(sim::speed_towards(a, {-80, 0}, b), -80);   // backing away
+  EXPECT_FLOAT_EQ(sim::speed_towards(a, {0, 300}, b), 0);     // passing square to it
+  EXPECT_FLOAT_EQ(sim::speed_towards(a, {100, 100}, b), 100); // the component towards it
+  EXPECT_FLOAT_EQ(sim::speed_towards(a, {100, 0}, a), 0);     // no line to walk along
+}
+
+namespace {
+// Both facing +x far from the ball: the thesis names b (behind, at x = 0) the pusher.
+const Pose2D kAhead{200, 0, 0}, kBehind{0, 0, 0};
+const sim::CollisionVerdict kBehindPushes = sim::judge_collision({}, kAhead, kBehind, 3000, 2000);
+constexpr float kWalkingIntoMmS = 50;
+} // namespace
+
+TEST(Collision, TheThesisPusherWalkingInPushes) {
+  ASSERT_EQ(kBehindPushes.pusher, 1);
+  EXPECT_EQ(sim::walking_pusher(kBehindPushes, kAhead, {}, kBehind, {120, 0}, kWalkingIntoMmS), 1);
+  // Both walking in: the thesis still decides.
+  EXPECT_EQ(sim::walking_pusher(kBehindPushes, kAhead, {-120, 0}, kBehind, {120, 0}, kWalkingIntoMmS), 1);
+}
+
+TEST(Collision, AStandingRobotWalkedIntoDoesNotPushTheWalkerDoes) {
+  // The robot ahead backs into the one behind, which stands: the thesis would call the stander.
+  EXPECT_EQ(sim::walking_pusher(kBehindPushes, kAhead, {-120, 0}, kBehind, {}, kWalkingIntoMmS), 0);
+}
+
+TEST(Collision, NeitherWalkingInIsNoFoul) {
+  EXPECT_EQ(sim::walking_pusher(kBehindPushes, kAhead, {}, kBehind, {}, kWalkingIntoMmS), -1);
+  // Slower than the threshold, backing away, or passing square: not walking into it.
+  EXPECT_EQ(sim::walking_pusher(kBehindPushes, kAhead, {40, 0}, kBehind, {40, 0}, kWalkingIntoMmS), -1);
+  EXPECT_EQ(sim::walking_pusher(kBehindPushes, kAhead, {0, 250}, kBehind, {-100, 0}, kWalkingIntoMmS), -1);
+}
+
+TEST(Collision, OnlyAPushingVerdictHasAWalkingPusher) {
+  const auto contest = sim::judge_collision({}, {0, 0, 0}, {250, 0, kPi}, 150, 0);
+  EXPECT_EQ(sim::walking_pusher(contest, {0, 0, 0}, {200, 0}, {250, 0, kPi}, {}, kWalkingIntoMmS), -1);
+}

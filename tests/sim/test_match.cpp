@@ -354,6 +354,7 @@ TEST(Match, PushingIsPenalisedAndThePushedRobotFallsThenGetsUp) {
   config.rules.fall_probability = 1;
   config.rules.getup_s = 2;
   config.match.ball_start_x_mm = 2500; // far from both: not contesting it
+  config.rules.pushing_model = "thesis"; // robots put down in contact: a push at once, without a walk
   sim::Match match(config);
   match.join({0, 1}, 1, 0);
   match.join({1, 1}, 2, 0);

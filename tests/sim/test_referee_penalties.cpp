@@ -11,10 +11,13 @@ namespace {
 const RobotId kRed2{0, 2}, kRed3{0, 3}, kRed4{0, 4}, kRedGoalie{0, 1};
 const RobotId kBlue2{1, 2}, kBlue3{1, 3};
 
-/// Red 2 walks into the back of blue 2 (both facing +x, red 200 mm behind), far from the ball.
+/// Red 2 walks into the back of blue 2 (both facing +x, red 200 mm behind), far from the ball,
+/// as the thesis judges it (rules.pushing_model = thesis): from the headings alone, at the
+/// first frame of contact, so these robots need not move. (WalkingInto below: the default.)
 class Pushing : public RefereeTest {
  protected:
   void SetUp() override {
+    rules.pushing_model = "thesis";
     put_ball(500.f, 1500.f); // over 500 mm from both robots: not contesting
     put_robot(kRed2, 0.f, 1000.f, 0.f);
     put_robot(kBlue2, 200.f, 1000.f, 0.f); // 200 mm ahead: in contact (< 300)
@@ -77,6 +80,7 @@ TEST_F(Pushing, ReEntryIsOnThePlusYTouchlineWhenTheBallIsOnTheMinusYSide) {
 }
 
 TEST_F(RefereeTest, TeamOnePusherGoesToItsOwnBenchAndHalf) {
+  rules.pushing_model = "thesis";
   put_ball(-500.f, 1500.f);
   put_robot(kBlue2, 0.f, 1000.f, kPi); // facing -x, behind red 2
   put_robot(kRed2, -200.f, 1000.f, kPi);
@@ -120,6 +124,150 @@ TEST_F(Pushing, TheRuleCanBeSwitchedOff) {
   EXPECT_TRUE(update_at(60).penalties.empty());
 }
 
+// --- pushing: walking into (the default rules.pushing_model) ---------------------------
+
+/// Robots moved frame by frame (30 Hz) after the kick-off, far from the ball.
+class WalkingInto : public RefereeTest {
+ protected:
+  static constexpr double kFrameS = 1.0 / 30;
+  void SetUp() override { put_ball(-2500.f, -1500.f); }
+  /// Updates frame by frame from `from_s` for `seconds`; before each update, `move`(t) puts
+  /// the robots where they are t seconds in. Returns every penalty given.
+  template <typename Move>
+  std::vector<Penalty> play(double from_s, double seconds, Move move) {
+    std::vector<Penalty> given;
+    for (int k = 1; k * kFrameS <= seconds + 1e-9; ++k) {
+      move(k * kFrameS);
+      const RefereeDecision d = update_at(from_s + k * kFrameS);
+      given.insert(given.end(), d.penalties.begin(), d.penalties.end());
+      apply(d);
+    }
+    return given;
+  }
+};
+
+TEST_F(WalkingInto, AStandingRobotWalkedIntoIsNotPenalisedTheWalkerIs) {
+  // Red 2 stands facing +x; blue 2 walks on into it (facing -x, 100 mm/s) from 500 mm away:
+  // in contact from 2 s on, a foul once that has lasted pushing_min_contact_s (1 s). Facing
+  // each other, both square: the thesis names red (a tie goes to the lower id), the robot
+  // that did not move.
+  ASSERT_EQ(rules.pushing_min_contact_s, 1.f);
+  put_robot(kRed2, 0.f, 0.f, 0.f);
+  put_robot(kBlue2, 500.f, 0.f, kPi);
+  start_playing();
+  const auto walk = [&](double t) { put_robot(kBlue2, std::max(120.f, 500.f - 100.f * float(t)), 0.f, kPi); };
+  const auto given = play(kKickOffS, 5, walk);
+  ASSERT_EQ(given.size(), 1u);
+  EXPECT_EQ(given[0].robot, kBlue2);
+  EXPECT_EQ(given[0].kind, PenaltyKind::kPushing);
+  EXPECT_NEAR(static_cast<double>(given[0].since_utime - at_s(kKickOffS)) * 1e-6, 3.0, 0.05);
+  EXPECT_FALSE(ref().penalised(kRed2));
+
+  // The thesis setting keeps its verdict: the stander, at the first frame of contact.
+  rules.pushing_model = "thesis";
+  referee.reset();
+  put_robot(kRed2, 0.f, 0.f, 0.f);
+  put_robot(kBlue2, 700.f, 0.f, kPi);
+  start_playing();
+  const auto thesis = play(kKickOffS, 5, walk);
+  ASSERT_EQ(thesis.size(), 1u);
+  EXPECT_EQ(thesis[0].robot, kRed2);
+  EXPECT_NEAR(static_cast<double>(thesis[0].since_utime - at_s(kKickOffS)) * 1e-6, 2.0, 0.05);
+}
+
+TEST_F(WalkingInto, TheRobotBehindWalkingIntoTheOnesBackIsPenalised) {
+  put_robot(kBlue2, 200.f, 1000.f, 0.f); // stands facing +x
+  put_robot(kRed2, -300.f, 1000.f, 0.f); // walks up behind it and on into it at 100 mm/s
+  start_playing();
+  const auto given =
+      play(kKickOffS, 5, [&](double t) { put_robot(kRed2, std::min(60.f, -300.f + 100.f * float(t)), 1000.f, 0.f); });
+  ASSERT_EQ(given.size(), 1u);
+  EXPECT_EQ(given[0].robot, kRed2);
+}
+
+TEST_F(WalkingInto, ABumpShorterThanTheMinimumContactIsNoFoul) {
+  // Blue 2 walks into standing red 2 at 200 mm/s, in contact for 0.5 s, then backs off.
+  put_robot(kRed2, 0.f, 0.f, 0.f);
+  put_robot(kBlue2, 500.f, 0.f, kPi);
+  start_playing();
+  const auto bump = [&](double t) {
+    const float x = t < 1.25 ? 500.f - 200.f * float(t) : 250.f + 200.f * float(t - 1.25);
+    put_robot(kBlue2, x, 0.f, kPi);
+  };
+  EXPECT_TRUE(play(kKickOffS, 3, bump).empty());
+  // With no minimum the same bump is a foul, the walker's.
+  rules.pushing_min_contact_s = 0;
+  referee.reset();
+  put_robot(kBlue2, 500.f, 0.f, kPi);
+  start_playing();
+  const auto given = play(kKickOffS, 3, bump);
+  ASSERT_EQ(given.size(), 1u);
+  EXPECT_EQ(given[0].robot, kBlue2);
+}
+
+TEST_F(WalkingInto, TwoStandingRobotsInContactIsNoFoul) {
+  put_robot(kRed2, 0.f, 1000.f, 0.f);
+  put_robot(kBlue2, 200.f, 1000.f, 0.f); // the thesis would call red at once
+  start_playing();
+  EXPECT_TRUE(play(kKickOffS, 10, [](double) {}).empty());
+}
+
+TEST_F(WalkingInto, BackingAwayIsNoFoul) {
+  // Blue 2 backs away from red 2 (which the thesis would call at once), and red 3 stands
+  // while blue 3 turns on the spot beside it.
+  put_robot(kRed2, 0.f, 1000.f, 0.f);
+  put_robot(kBlue2, 150.f, 1000.f, 0.f);
+  put_robot(kRed3, 0.f, -1000.f, 0.f);
+  put_robot(kBlue3, 0.f, -750.f, 0.f);
+  start_playing();
+  const auto given = play(kKickOffS, 4, [&](double t) {
+    put_robot(kBlue2, 150.f + 100.f * float(t), 1000.f, 0.f);
+    put_robot(kBlue3, 0.f, -750.f, float(t));
+  });
+  EXPECT_TRUE(given.empty());
+}
+
+TEST_F(WalkingInto, APlacementIsNoWalk) {
+  // Red 3 re-enters on the -y touchline (the ball is on the +y side), 310 mm from blue 2,
+  // and creeps towards it at 30 mm/s: a slow step, not the 350 mm jump from its bench.
+  rules.removal_s = 1;
+  put_ball(-2500.f, 1500.f);
+  put_robot(kRed3, -400.f, 0.f, 0.f);
+  put_robot(kBlue2, -1200.f, -1690.f, -kPi / 2); // stands, facing red 3's re-entry spot
+  start_playing();
+  put_robot(kRed3, -2700.f, 0.f, 0.f); // an illegal defender: off for 1 s
+  auto d = update_at(kKickOffS + 1);
+  ASSERT_EQ(d.penalties.size(), 1u);
+  apply(d);
+  d = update_at(kKickOffS + 2);
+  ASSERT_EQ(d.released.size(), 1u);
+  expect_pose(d.placements[0].pose, -1200.f, -2000.f, kPi / 2);
+  apply(d);
+  const auto creep = [&](double t) { put_robot(kRed3, -1200.f, -2000.f + 30.f * float(t), kPi / 2); };
+  EXPECT_TRUE(play(kKickOffS + 2, 1, creep).empty()); // in contact from 0.33 s on
+}
+
+TEST_F(WalkingInto, AStoppageEndsTheContactsTiming) {
+  // Blue 2 walks into red 2 for the last 0.25 s of the first half and stands through the
+  // break; in the second half it walks on: the contact is timed from the second half's
+  // PLAYING (702 s), not from before the break.
+  rules.game_stuck_s = 0;
+  rules.manual_placement = false;
+  put_robot(kRed2, -50.f, 1500.f, 0.f);
+  put_robot(kBlue2, 400.f, 1500.f, kPi);
+  start_playing();
+  update_at(650);
+  play(650, 1, [&](double t) { put_robot(kBlue2, 400.f - 200.f * float(t), 1500.f, kPi); }); // to 200 mm
+  ASSERT_NE(ref().state(), GameState::kPlaying);
+  for (double s : {660.0, 700.0, 701.9}) EXPECT_TRUE(update_at(s).penalties.empty());
+  const auto given = play(701.9, 3, [&](double t) {
+    put_robot(kBlue2, std::max(100.f, 200.f - 100.f * float(std::max(0.0, t - 0.1))), 1500.f, kPi);
+  });
+  ASSERT_EQ(given.size(), 1u);
+  EXPECT_EQ(given[0].robot, kBlue2);
+  EXPECT_GE(given[0].since_utime, at_s(702.95)); // a second into the second half
+}
+
 TEST_F(Pushing, ACrashedRobotIsNotPenalised) {
   put_robot(kRed2, 0.f, 1000.f, 0.f, /*active=*/false);
   start_playing();
@@ -146,6 +294,7 @@ TEST_F(RefereeTest, ContestingTheBallIsNoFoulAndStopsTheRobotFartherFromIt) {
 }
 
 TEST_F(RefereeTest, FacingEachOtherAwayFromTheBallTheSquarerWalkerPushes) {
+  rules.pushing_model = "thesis";
   put_ball(-2500.f, -1500.f);
   put_robot(kRed2, -100.f, 0.f, 0.f);           // walks straight at blue 2
   put_robot(kBlue2, 100.f, 0.f, kPi - 0.5f);    // 0.5 rad off red 2
@@ -157,6 +306,7 @@ TEST_F(RefereeTest, FacingEachOtherAwayFromTheBallTheSquarerWalkerPushes) {
 }
 
 TEST_F(RefereeTest, RobotsReleasedTogetherDoNotLandOnEachOther) {
+  rules.pushing_model = "thesis";
   put_ball(500.f, 1500.f);
   put_robot(kRed2, 0.f, 1000.f, 0.f);
   put_robot(kBlue2, 200.f, 1000.f, 0.f);

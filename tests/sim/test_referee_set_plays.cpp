@@ -118,6 +118,7 @@ TEST_F(SetPlays, AGoalEndsTheSetPlayWithPlaying) {
 // --- fouls ------------------------------------------------------------------------------
 
 TEST_F(SetPlays, APushIsAPushingFreeKickForTheFouledTeamWithTheBallLeftWhereItIs) {
+  rules.pushing_model = "thesis"; // standing robots: the thesis calls the push at first contact
   put_ball(500.f, 2500.f);              // far from both: no contest
   put_robot(kRed2, 0.f, 1000.f, 0.f);
   put_robot(kBlue2, 200.f, 1000.f, 0.f); // red walks into blue's back
@@ -132,6 +133,7 @@ TEST_F(SetPlays, APushIsAPushingFreeKickForTheFouledTeamWithTheBallLeftWhereItIs
 }
 
 TEST_F(SetPlays, APushFromInsideTheOwnPenaltyAreaIsAPenaltyKickFromTheMark) {
+  rules.pushing_model = "thesis"; // standing robots: the thesis calls the push at first contact
   put_ball(-2000.f, 2500.f);
   put_robot(kRed2, -3800.f, 1500.f, 0.f);  // in team 0's penalty area (1650 deep, 2000 either side)
   put_robot(kBlue2, -3600.f, 1500.f, 0.f);
@@ -142,6 +144,7 @@ TEST_F(SetPlays, APushFromInsideTheOwnPenaltyAreaIsAPenaltyKickFromTheMark) {
 }
 
 TEST_F(SetPlays, WithoutAPenaltyAreaTheGoalBoxServesAsOne) {
+  rules.pushing_model = "thesis"; // standing robots: the thesis calls the push at first contact
   field = Field{FieldDef{}}; // SPL 2011: no penalty area; goal box 600 deep, 2200 wide; marks 1800 in
   put_ball(0.f, 1800.f);
   put_robot(kBlueGoalie, 2700.f, 800.f, kPi); // in team 1's goal box (the goalie may be)

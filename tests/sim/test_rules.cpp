@@ -47,6 +47,10 @@ void expect_equal(const RulesDef& a, const RulesDef& b) {
   EXPECT_EQ(a.collision.contact_distance_mm, b.collision.contact_distance_mm);
   EXPECT_EQ(a.collision.contest_distance_mm, b.collision.contest_distance_mm);
   EXPECT_EQ(a.pushing_cooldown_s, b.pushing_cooldown_s);
+  EXPECT_EQ(a.pushing_model, b.pushing_model);
+  EXPECT_EQ(a.pushing_speed_mm_s, b.pushing_speed_mm_s);
+  EXPECT_EQ(a.pushing_window_s, b.pushing_window_s);
+  EXPECT_EQ(a.pushing_min_contact_s, b.pushing_min_contact_s);
   EXPECT_EQ(a.leave_field_margin_mm, b.leave_field_margin_mm);
   EXPECT_EQ(a.manual_placement, b.manual_placement);
   EXPECT_EQ(a.ball_out, b.ball_out);
@@ -73,6 +77,8 @@ TEST(Rules, OverridesSetOneRule) {
   EXPECT_FALSE(rules.pushing);
   EXPECT_EQ(rules.removal_s, 10.f);
   EXPECT_TRUE(rules.illegal_defender);
+  schema.apply_override("rules.pushing_model=thesis");
+  EXPECT_EQ(rules.pushing_model, "thesis");
 }
 
 std::string validation_error(const RulesDef& rules) {
@@ -100,6 +106,18 @@ TEST(Rules, BadValuesNameTheKey) {
   r = RulesDef{};
   r.getup_s = INFINITY; // set in code, past the file reader: validate refuses it all the same
   EXPECT_EQ(validation_error(r), "rules.getup_s must be in [0, 1000000] (got inf)");
+  r = RulesDef{};
+  r.pushing_model = "heading";
+  EXPECT_EQ(validation_error(r), "rules.pushing_model must be thesis or walking_into (got 'heading')");
+  r = RulesDef{};
+  r.pushing_speed_mm_s = -5;
+  EXPECT_EQ(validation_error(r), "rules.pushing_speed_mm_s must be in [0, 1000000] (got -5)");
+  r = RulesDef{};
+  r.pushing_window_s = 0; // a velocity needs a time to divide by
+  EXPECT_EQ(validation_error(r), "rules.pushing_window_s must be in (0, 10] (got 0)");
+  r = RulesDef{};
+  r.pushing_min_contact_s = NAN;
+  EXPECT_EQ(validation_error(r), "rules.pushing_min_contact_s must be in [0, 1000000] (got nan)");
   EXPECT_EQ(validation_error(RulesDef{}), "");
 }
 

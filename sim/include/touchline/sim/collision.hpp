@@ -40,4 +40,23 @@ struct CollisionVerdict {
 CollisionVerdict judge_collision(const CollisionDef& def, const Pose2D& a, const Pose2D& b, float ball_x_mm,
                                  float ball_y_mm);
 
+/// A robot's body velocity over the referee's window, field frame, mm/s.
+struct BodyVelocity {
+  float x_mm_s = 0, y_mm_s = 0;
+};
+
+/// The component of `v`, the velocity of a robot at `from`, along the line to `to`, mm/s:
+/// + walking into it, - moving away, 0 standing or passing square to it.
+float speed_towards(const Pose2D& from, const BodyVelocity& v, const Pose2D& to);
+
+/// The SPL's reading of a kPushing verdict (rules.pushing_model = walking_into): the robot
+/// that walks into an opponent pushes it; one that stands or backs away does not. Of the
+/// pusher the thesis named and the other robot, the first whose speed towards the other
+/// exceeds `walking_into_mm_s` is the pusher: the thesis' choice when both walk in (it still
+/// decides who is behind or walks more squarely into whom), the other robot when only it
+/// walks in (it walked into a robot standing or backing away), nobody (-1) when neither
+/// does. Returns 0 (a), 1 (b) or -1.
+int walking_pusher(const CollisionVerdict& verdict, const Pose2D& a, const BodyVelocity& va, const Pose2D& b,
+                   const BodyVelocity& vb, float walking_into_mm_s);
+
 } // namespace touchline::sim

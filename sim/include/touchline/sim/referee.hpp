@@ -19,7 +19,9 @@
 // - Penalties are given only in PLAYING, except leaving the field (READY, SET, PLAYING:
 //   robots walking to their positions must stay on the field too). Penalty time runs in
 //   every state. Crashed (inactive) robots are never penalised.
-// - Pushing is judged by the thesis' heuristic (collision.hpp) between opponents only.
+// - Pushing is judged by the thesis' heuristic (collision.hpp) between opponents only; by
+//   default (rules.pushing_model = walking_into) only a robot walking into the other, its
+//   body velocity taken from the poses the referee saw over rules.pushing_window_s.
 // - Ball out: put back on the line it crossed, ball_out_setback_mm towards the own goal
 //   of the team that touched it last (the match says which), or where it crossed if
 //   nobody knows; no throw-in or goal-kick spots.
@@ -37,6 +39,7 @@
 // and the set play's time is checked once per update (a frame), not timed to the microsecond.
 #include <array>
 #include <cstdint>
+#include <deque>
 #include <map>
 #include <optional>
 #include <utility>
@@ -213,6 +216,17 @@ class Referee {
   void check_leaving_field(int64_t now, const Robots& robots, RefereeDecision& d);
   void check_illegal_defenders(int64_t now, const Robots& robots, RefereeDecision& d);
   void check_collisions(int64_t now, const BallTruth& ball, const Robots& robots, RefereeDecision& d);
+  /// walking_into: the pusher of a kPushing verdict between a and b, 0 (a), 1 (b) or -1
+  /// (no foul yet: in contact shorter than pushing_min_contact_s, or nobody walking in).
+  int judge_walking_into(int64_t now, const RobotOnField& a, const RobotOnField& b, const CollisionVerdict& v,
+                         const RefereeDecision& d) const;
+  /// Appends each robot's pose to its track (velocity_of) and drops what the window no
+  /// longer needs.
+  void record_tracks(int64_t now, const Robots& robots);
+  /// The robot's displacement from its oldest tracked pose within pushing_window_s (or the
+  /// one just before it) to `body`, divided by the time between; zero without a track or
+  /// when this update placed the robot (a placement is no walk).
+  BodyVelocity velocity_of(const RobotOnField& r, int64_t now, const RefereeDecision& d) const;
   void place_for_kickoff(Robots& robots, RefereeDecision& d) const;
   Pose2D free_reentry_position(RobotId id, const BallTruth& ball, const Robots& robots) const;
   bool may_be_penalised(const RobotOnField& r) const;
@@ -243,6 +257,12 @@ class Referee {
   std::map<RobotId, Penalty> penalties_;
   /// Last pushing penalty of each pair of opponents, (lower id, higher id): the cooldown.
   std::map<std::pair<RobotId, RobotId>, int64_t> last_push_utime_;
+  /// When each pair of opponents now within contact distance came into contact, (lower id,
+  /// higher id); a pair no longer in contact is dropped.
+  std::map<std::pair<RobotId, RobotId>, int64_t> contact_since_utime_;
+  /// Each robot's poses as the referee saw them, (utime, body), oldest first, covering
+  /// pushing_window_s: its body velocity. Cleared when the referee places the robot.
+  std::map<RobotId, std::deque<std::pair<int64_t, Pose2D>>> tracks_;
 };
 
 } // namespace touchline::sim
