@@ -264,11 +264,14 @@ struct World::Impl {
     contact_rules.touches.clear();
     std::vector<FootVelocity> commands;
     commands.reserve(2 * robots.size());
+    std::vector<float> commanded_twist;  // each robot's twist after the tick, had nothing touched it
+    commanded_twist.reserve(robots.size());
     for (std::size_t i = 0; i < robots.size(); ++i) {
       const Robot& r = robots[i];
       const float theta = mean_heading(r.left->GetAngle(), r.right->GetAngle());
       commands.push_back(foot_velocity(r.left, theta, motions[i].left));
       commands.push_back(foot_velocity(r.right, theta, motions[i].right));
+      commanded_twist.push_back(twist_of(r) + motions[i].right.dtheta_rad - motions[i].left.dtheta_rad);
     }
     const int substeps = std::max(1, physics.substeps);
     const float h = kMotionTick_s / static_cast<float>(substeps);
@@ -281,16 +284,23 @@ struct World::Impl {
     // A foot without a command next tick stays put.
     for (const FootVelocity& c : commands) set_velocity(c.foot, b2Vec2(0, 0), 0.f);
     if (physics.max_foot_twist_rad > 0)
-      for (const Robot& r : robots) hold_twist(r);
+      for (std::size_t i = 0; i < robots.size(); ++i) hold_twist(robots[i], commanded_twist[i]);
     ++ticks;
   }
 
-  /// Turns both feet of `r` towards each other, equally, until one is at most
-  /// max_foot_twist_rad from the other (their mean heading stays where it was).
-  void hold_twist(const Robot& r) const {
-    const float twist = normalise_angle(r.right->GetAngle() - r.left->GetAngle());
-    if (std::fabs(twist) <= physics.max_foot_twist_rad) return;
-    const float excess = 0.5f * (twist - std::copysign(physics.max_foot_twist_rad, twist));
+  /// The right foot's heading less the left's, rad.
+  static float twist_of(const Robot& r) { return normalise_angle(r.right->GetAngle() - r.left->GetAngle()); }
+
+  /// Turns both feet of `r` towards each other, equally (their mean heading stays where it
+  /// was), until one is at most max_foot_twist_rad from the other, or as far as the walk
+  /// itself turned them apart (`commanded` rad, the twist had nothing touched them): only a
+  /// contact's twist is held, never the walk's own (a turning walk's feet open ~0.83 rad).
+  void hold_twist(const Robot& r, float commanded) const {
+    constexpr float kSolverSlack_rad = 1e-4f; // the solver's rounding on an untouched foot: no correction
+    const float twist = twist_of(r);
+    const float bound = std::max(physics.max_foot_twist_rad, std::fabs(normalise_angle(commanded)));
+    if (std::fabs(twist) <= bound + kSolverSlack_rad) return;
+    const float excess = 0.5f * (twist - std::copysign(bound, twist));
     r.left->SetTransform(r.left->GetPosition(), r.left->GetAngle() + excess);
     r.right->SetTransform(r.right->GetPosition(), r.right->GetAngle() - excess);
   }

@@ -472,37 +472,76 @@ TEST(World, AFootCommandedBeyondTheLegsDragsTheOther) {
   EXPECT_GT(world.robot(0).right_foot.y_mm, -50.f + 100.f) << "the right foot was dragged along";
 }
 
-/// Largest jump of robot 0's body heading between two ticks, and the feet's twist at the end,
-/// while its left foot alone is turned 0.05 rad a tick for 100 ticks (5 rad, if nothing held it).
-std::pair<float, float> turn_one_foot(const PhysicsDef& physics) {
+/// What robot 0's feet did in a run: the largest jump of its body heading between two ticks,
+/// and the largest twist (one foot's heading less the other's) at any tick.
+struct TwistRun {
+  float jump = 0;
+  float twist = 0;
+};
+
+/// Robot 0 at the origin moves its feet by `own` every tick, while robot 1's feet (from
+/// `other`, none: no robot 1) move by `push`; 100 ticks.
+TwistRun run_feet(const PhysicsDef& physics, const TickMotion& own, const Pose2D* other = nullptr,
+                  const TickMotion& push = {}) {
   World world(FieldDef{}, physics);
   world.add_robot(kRed1, Pose2D{0, 0, 0});
+  if (other) world.add_robot(kBlue1, *other);
   park_ball(world);
-  TickMotion twist;
-  twist.left.dtheta_rad = 0.05f;
-  float jump = 0;
+  TwistRun run;
   float heading = world.robot(0).body.theta_rad;
   for (int t = 0; t < 100; ++t) {
-    world.step({twist});
-    const float now = world.robot(0).body.theta_rad;
-    jump = std::max(jump, std::fabs(normalise_angle(now - heading)));
-    heading = now;
+    if (other) world.step({own, push});
+    else world.step({own});
+    const RobotTruth r = world.robot(0);
+    run.jump = std::max(run.jump, std::fabs(normalise_angle(r.body.theta_rad - heading)));
+    run.twist = std::max(run.twist, std::fabs(normalise_angle(r.right_foot.theta_rad - r.left_foot.theta_rad)));
+    heading = r.body.theta_rad;
   }
-  const RobotTruth r = world.robot(0);
-  return {jump, std::fabs(normalise_angle(r.right_foot.theta_rad - r.left_foot.theta_rad))};
+  return run;
 }
 
-// The legs hold the feet's headings within max_foot_twist_rad, so the body's heading (their
-// mean) turns smoothly. Without the limit (the default, 0) the feet turn pi apart and the body flips about.
-TEST(World, TheLegsHoldTheFeetsHeadingsTogether) {
+/// Robot 1 walks into robot 0 from its front left, turning as it comes, and shoves it along:
+/// its feet spin robot 0's left foot (the contacts of a match's pushes).
+TwistRun shoved(const PhysicsDef& physics) {
+  const Pose2D other{150, 300, -0.5f * kPi};
+  TickMotion drive;
+  drive.left.dx_mm = drive.right.dx_mm = 20;
+  drive.left.dtheta_rad = drive.right.dtheta_rad = -0.1f;
+  return run_feet(physics, TickMotion{}, &other, drive);
+}
+
+// The legs hold the feet's headings within max_foot_twist_rad against a contact, so the body's
+// heading (their mean) cannot flip. Without the limit the contact turns them further apart.
+TEST(World, TheLegsHoldTheFeetsHeadingsTogetherAgainstAContact) {
   PhysicsDef physics;
-  physics.max_foot_twist_rad = 0.8f;
-  const auto [jump, twist] = turn_one_foot(physics);
-  EXPECT_LE(twist, physics.max_foot_twist_rad + 1e-4f);
-  EXPECT_LT(jump, 0.05f) << "the body heading jumped";
+  ASSERT_GT(physics.max_foot_twist_rad, 0.f) << "the limit is on by default";
+  const TwistRun held = shoved(physics);
+  EXPECT_LE(held.twist, physics.max_foot_twist_rad + 1e-3f);
+  EXPECT_LT(held.jump, 0.2f) << "the body heading jumped";
   PhysicsDef free = physics;
   free.max_foot_twist_rad = 0;
-  EXPECT_GT(turn_one_foot(free).first, 3.f) << "without the limit, the body flips (the case the limit is for)";
+  EXPECT_GT(shoved(free).jump, 3.f) << "without the limit, the body flips about (the case the limit is for)";
+}
+
+// The walk's own turn is never held: a foot turned by its command, 5 rad over 100 ticks, turns
+// exactly as far with the limit as without it (a turning walk opens the feet ~0.83 rad).
+TEST(World, TheLegsLeaveTheWalksOwnTwistAlone) {
+  PhysicsDef physics;
+  TickMotion turn;
+  turn.left.dtheta_rad = 0.05f;
+  PhysicsDef free = physics;
+  free.max_foot_twist_rad = 0;
+  World held(FieldDef{}, physics), loose(FieldDef{}, free);
+  for (World* w : {&held, &loose}) {
+    w->add_robot(kRed1, Pose2D{0, 0, 0});
+    park_ball(*w);
+  }
+  for (int t = 0; t < 100; ++t) {
+    held.step({turn});
+    loose.step({turn});
+    ASSERT_EQ(held.robot(0).left_foot.theta_rad, loose.robot(0).left_foot.theta_rad) << "tick " << t;
+    ASSERT_EQ(held.robot(0).right_foot.theta_rad, loose.robot(0).right_foot.theta_rad) << "tick " << t;
+  }
 }
 
 // --- determinism ------------------------------------------------------------------------

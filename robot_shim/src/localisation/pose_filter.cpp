@@ -65,6 +65,7 @@ void PoseFilter::reset(const Pose2D& pose, const PoseCovariance& covariance) {
   mean_ = {pose.x_mm, pose.y_mm, api::wrapAngle<double>(pose.theta_rad)};
   covariance_ = covariance;
   rejections_in_a_row_ = 0;
+  heading_votes_.clear();
 }
 
 void PoseFilter::reset(const Pose2D& pose) {
@@ -72,6 +73,10 @@ void PoseFilter::reset(const Pose2D& pose) {
 }
 
 void PoseFilter::predict(const OdometryDelta& delta) {
+  for (HeadingVote& v : heading_votes_) ++v.age;
+  heading_votes_.erase(std::remove_if(heading_votes_.begin(), heading_votes_.end(),
+                                      [&](const HeadingVote& v) { return v.age > def_.heading_jump_window; }),
+                       heading_votes_.end());
   const double theta = mean_[2];
   const double c = std::cos(theta), s = std::sin(theta);
   mean_[0] += c * delta.dx_mm - s * delta.dy_mm;
@@ -126,6 +131,9 @@ UpdateResult PoseFilter::update(const Observation& observation) {
   stats_.last_mahalanobis_sq = mahalanobis_sq;
   if (!(mahalanobis_sq <= def_.gate_mahalanobis_sq)) {  // also rejects NaN
     ++stats_.rejected;
+    if (vote_heading_jump(sq(innovation(0)) / s(0, 0), innovation(1), s(1, 1), range,
+                          static_cast<int>(observation.kind) * 256 + observation.id))
+      return UpdateResult::kRejected;
     if (++rejections_in_a_row_ >= def_.max_rejections_in_a_row) {
       // Everything disagrees with the estimate: trust it less so the landmarks can win.
       p += Eigen::Vector3d(sq(def_.lost_sigma_xy_mm), sq(def_.lost_sigma_xy_mm), sq(def_.lost_sigma_theta_rad))
@@ -169,6 +177,43 @@ UpdateResult PoseFilter::update(const Observation& observation) {
   ++stats_.accepted;
   rejections_in_a_row_ = 0;
   return UpdateResult::kAccepted;
+}
+
+bool PoseFilter::vote_heading_jump(double range_innovation_sq_over_var, double bearing_innovation_rad,
+                                   double bearing_var, double range_mm, int landmark) {
+  if (def_.heading_jump_votes <= 0 || range_mm < def_.heading_jump_min_range_mm) return false;
+  if (!(range_innovation_sq_over_var <= def_.heading_jump_range_gate_sq)) return false; // the position is off too
+  if (!(sq(bearing_innovation_rad) / bearing_var > def_.gate_mahalanobis_sq)) return false; // not the bearing that failed
+  // Seen at bearing b where b' was predicted: the robot faces (b' - b) further round than believed.
+  heading_votes_.push_back({-bearing_innovation_rad, 0, landmark});
+  if (static_cast<int>(heading_votes_.size()) < def_.heading_jump_votes) return false;
+  std::vector<double> errors;
+  for (const HeadingVote& v : heading_votes_) errors.push_back(v.error_rad);
+  std::nth_element(errors.begin(), errors.begin() + static_cast<std::ptrdiff_t>(errors.size() / 2), errors.end());
+  const double median = errors[errors.size() / 2];
+  double sum = 0;
+  int agreeing = 0;
+  std::vector<int> landmarks;
+  for (const HeadingVote& v : heading_votes_)
+    if (std::fabs(api::wrapAngle<double>(v.error_rad - median)) <= def_.heading_jump_agree_rad) {
+      sum += api::wrapAngle<double>(v.error_rad - median);
+      ++agreeing;
+      if (std::find(landmarks.begin(), landmarks.end(), v.landmark) == landmarks.end()) landmarks.push_back(v.landmark);
+    }
+  if (agreeing < def_.heading_jump_votes || static_cast<int>(landmarks.size()) < def_.heading_jump_landmarks)
+    return false;
+  mean_[2] = api::wrapAngle<double>(mean_[2] + median + sum / agreeing);
+  // The heading is known again to the votes' spread; the position's correlation with the
+  // old heading is void, and the position itself was dragged while the heading was wrong.
+  auto p = as_matrix(covariance_);
+  p(0, 2) = p(2, 0) = p(1, 2) = p(2, 1) = 0;
+  p(2, 2) = sq(def_.heading_jump_sigma_theta_rad);
+  p(0, 0) += sq(def_.heading_jump_sigma_xy_mm);
+  p(1, 1) += sq(def_.heading_jump_sigma_xy_mm);
+  heading_votes_.clear();
+  rejections_in_a_row_ = 0;
+  ++stats_.heading_jumps;
+  return true;
 }
 
 Pose2D PoseFilter::pose() const {

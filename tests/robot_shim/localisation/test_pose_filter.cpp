@@ -123,6 +123,57 @@ TEST(PoseFilter, RecoversFromAKidnapByWideningItsCovariance) {
   EXPECT_LT(heading_error(filter, truth), 0.05);
 }
 
+/// A well-localised robot at `at` that a contact turned by `turn` rad, unseen by odometry:
+/// the filter after `frames` frames of the landmarks in view (heading_jump_votes 0: no re-aim).
+PoseFilter turned_by_a_contact(const Pose2D& at, double turn, int frames, int heading_jump_votes) {
+  PoseFilterDef def;
+  def.heading_jump_votes = heading_jump_votes;
+  PoseFilter filter(FieldMap{}, def, at);
+  filter.reset(at, diagonal_covariance(40, 40, 0.03));
+  const Pose2D truth{at.x_mm, at.y_mm, static_cast<float>(wrap(at.theta_rad + turn))};
+  std::mt19937 rng(5);
+  const FieldMap map;
+  const synthetic::Camera camera;
+  for (int frame = 0; frame < frames; ++frame) {
+    filter.predict({});
+    for (const Observation& o : synthetic::see_landmarks(map, camera, truth, 0.0, rng)) filter.update(o);
+  }
+  return filter;
+}
+
+TEST(PoseFilter, ReAimsAHeadingAContactTurnedOnTheLandmarksWithoutMovingThePosition) {
+  // 2 m in front of team 1's goal, believing it faces the touchline, turned 1.2 rad by a
+  // push to face the goal: it sees the posts' ranges as it expects and their bearings
+  // 1.2 rad off, so its heading is wrong, not its position.
+  const Pose2D at{1000.f, 0.f, 1.25f};
+  const double turn = -1.2;
+  const Pose2D truth{at.x_mm, at.y_mm, static_cast<float>(wrap(at.theta_rad + turn))};
+  const PoseFilter filter = turned_by_a_contact(at, turn, 3, PoseFilterDef{}.heading_jump_votes);
+  EXPECT_EQ(filter.stats().heading_jumps, 1);
+  EXPECT_LT(heading_error(filter, truth), 0.05);
+  EXPECT_LT(position_error(filter, truth), 100.0);
+  // Without it, the filter waits for 10 rejections in a row before widening its covariance.
+  const PoseFilter widened = turned_by_a_contact(at, turn, 3, 0);
+  EXPECT_EQ(widened.stats().heading_jumps, 0);
+  EXPECT_GT(heading_error(widened, truth), 1.0);
+}
+
+TEST(PoseFilter, AKidnapIsNoHeadingJump) {
+  // Carried 1.5 m: the ranges disagree too, so no landmark votes for a heading error.
+  const Pose2D truth{1000.f, 0.f, 0.05f};
+  PoseFilter filter(FieldMap{}, PoseFilterDef{}, Pose2D{-500.f, 0.f, 0.05f});
+  filter.reset(Pose2D{-500.f, 0.f, 0.05f}, diagonal_covariance(40, 40, 0.03));
+  std::mt19937 rng(9);
+  const FieldMap map;
+  const synthetic::Camera camera;
+  for (int frame = 0; frame < 5; ++frame) {
+    filter.predict({});
+    for (const Observation& o : synthetic::see_landmarks(map, camera, truth, 0.0, rng)) filter.update(o);
+  }
+  EXPECT_GT(filter.stats().rejected, 0);
+  EXPECT_EQ(filter.stats().heading_jumps, 0);
+}
+
 TEST(PoseFilter, CovarianceGrowsWithoutObservations) {
   PoseFilter filter;
   filter.reset(Pose2D{0.f, 0.f, 0.f}, diagonal_covariance(10, 10, 0.01));

@@ -31,12 +31,13 @@ struct PhysicsDef {
   /// A Nao's hips are 100 mm apart and its largest step (a kick's swing) about 200 mm; a push
   /// moves the robot, not one foot away from the other.
   float max_foot_spread_mm = 300.f;
-  /// The legs also hold the feet's headings together: one foot is never turned more than this
-  /// from the other, rad (a Nao's hip yaw-pitch joint turns its feet apart by less than 1 rad).
-  /// Without it a contact that spins one foot could turn the two pi apart, where their mean
-  /// heading, the body's, flips by pi: a robot turned about in one frame, unseen by odometry.
-  /// 0: no limit (the default: 0.8 breaks the tile-walker training test; see the issue).
-  float max_foot_twist_rad = 0.f;
+  /// The legs also hold the feet's headings together against contacts: a contact never turns
+  /// one foot more than this from the other, rad (a Nao's hip yaw-pitch joint turns its feet
+  /// apart by less than 1 rad). Without it a contact that spins one foot could turn the two pi
+  /// apart, where their mean heading, the body's, flips by pi: a robot turned about in one
+  /// frame, unseen by odometry. The walk's own commanded twist (a fast turn opens the feet
+  /// ~0.83 rad) is never held. 0: no limit.
+  float max_foot_twist_rad = 0.8f;
   float wall_restitution = 0.3f;         ///< ball off the boundary walls, 0..1
   float post_restitution = 0.5f;         ///< ball off the goal posts, 0..1
   float net_restitution = 0.f;           ///< ball off the nets, 0..1: nets absorb the ball, so a goal stays in

@@ -7,6 +7,7 @@
 // arrays in the interface; the matrix algebra (Eigen) stays in the .cpp.
 #include <array>
 #include <cstdint>
+#include <vector>
 
 #include "touchline/frame.hpp"
 #include "touchline/robot/localisation/field_map.hpp"
@@ -36,6 +37,20 @@ struct PoseFilterDef {
   int max_rejections_in_a_row = 10;    ///< this many rejections with no acceptance between: the pose itself must be wrong (pushed, picked up), so ...
   double lost_sigma_xy_mm = 500.0;     ///< ... add this much position sigma (mm) ...
   double lost_sigma_theta_rad = 0.5;   ///< ... and heading sigma (rad) to the covariance.
+
+  // A heading jump (a contact turned the robot, unseen by odometry): rejected landmarks whose
+  // range fits the estimate (so the position is not what is wrong) but whose bearing does
+  // not each vote for the heading error their bearing implies; enough votes that agree
+  // re-aim the heading on the landmarks at once (widening the covariance alone lets the
+  // landmarks drag the position instead, before the heading follows).
+  double heading_jump_range_gate_sq = 6.63; ///< the range's own squared innovation over its variance must be within this (chi^2, 1 dof, 99 %)
+  double heading_jump_min_range_mm = 300.0; ///< nearer landmarks do not vote (their bearing moves with the position)
+  int heading_jump_votes = 3;               ///< votes within heading_jump_agree_rad of their median that re-aim the heading ...
+  int heading_jump_landmarks = 2;           ///< ... from at least this many landmarks (one wrong id seen again and again agrees with itself)
+  double heading_jump_agree_rad = 0.2;      ///< rad
+  int heading_jump_window = 30;             ///< predicts (camera frames, 1 s) a vote counts for
+  double heading_jump_sigma_theta_rad = 0.2;///< heading sigma once re-aimed, rad
+  double heading_jump_sigma_xy_mm = 150.0;  ///< position sigma added once re-aimed (the wrong heading dragged it), mm
 
   // A pose known from the rules (the robot's start on its touchline, a penalty's return).
   double initial_sigma_xy_mm = 300.0;  ///< mm: how far the robot may stand from where the rules place it
@@ -70,6 +85,7 @@ struct PoseFilterStats {
   int64_t rejected = 0;
   int64_t ignored = 0;
   int64_t inflations = 0;  ///< times max_rejections_in_a_row widened the covariance
+  int64_t heading_jumps = 0; ///< times the landmarks re-aimed the heading
   double last_mahalanobis_sq = 0; ///< of the last gated observation
 };
 
@@ -107,6 +123,18 @@ class PoseFilter {
   PoseCovariance covariance_{};
   PoseFilterStats stats_;
   int rejections_in_a_row_ = 0;
+  /// Heading errors the recent rejected landmarks voted for, rad, and their age in predicts.
+  struct HeadingVote {
+    double error_rad;
+    int age;
+    int landmark; ///< which landmark voted (kind * 256 + id)
+  };
+  std::vector<HeadingVote> heading_votes_;
+
+  /// A rejected observation whose range fits: its vote; re-aims the heading when enough agree.
+  /// True when it re-aimed.
+  bool vote_heading_jump(double range_innovation_sq_over_var, double bearing_innovation_rad,
+                         double bearing_var, double range_mm, int landmark);
 };
 
 } // namespace touchline::robot::localisation
