@@ -50,7 +50,8 @@ def experiment_result(team0: str, team1: str, rows: list[dict]) -> dict:
                 "penalties": json.loads(r["penalty_kinds"]), "falls": r["falls0"] + r["falls1"], "sim_s": r["sim_s"],
                 "possession_frames": [r["possession_frames0"], r["possession_frames1"]],
                 "stuck_s": [r["stuck_s0"], r["stuck_s1"]], "ball_moving_share": r["ball_moving_share"],
-                "playing_share": r["playing_share"]}
+                "playing_share": r["playing_share"],
+                "localisation_worst_mm": [r["localisation_worst_mm0"], r["localisation_worst_mm1"]]}
                for r in played]
     (cell,) = sweep_summary.summarise(played) if played else [{"goal_difference_mean": None,
                                                                "goal_difference_ci95": None}]
@@ -63,17 +64,22 @@ def per_match(matches: list[dict]) -> dict:
     """Issue #17's measures per match, for each team: pushing and illegal-defender penalties,
     the most stuck seconds of any match (0: no robot was ever stuck more than 10 s), the
     mean share of the match the ball was in play and moving, and that as a share of the time
-    in PLAYING (set-up states, goals and half time are 35-45 % of a match; None without logs)."""
+    in PLAYING (set-up states, goals and half time are 35-45 % of a match; None without logs),
+    and each team's worst robot's localisation RMS, mean over the matches and the largest."""
     n = max(1, len(matches))
     penalties = sum((Counter(m["penalties"]) for m in matches), Counter())
     moving = [m["ball_moving_share"] for m in matches if m["ball_moving_share"] != ""]
     playing = [m.get("playing_share", "") for m in matches if m["ball_moving_share"] != ""]
     stuck = [[m["stuck_s"][t] for m in matches if m["stuck_s"][t] != ""] for t in (0, 1)]
+    worst = [[m["localisation_worst_mm"][t] for m in matches if m.get("localisation_worst_mm", ["", ""])[t] != ""]
+             for t in (0, 1)]
     return {"pushing": [penalties[f"{t}:pushing"] / n for t in (0, 1)],
             "illegal_defender": [penalties[f"{t}:illegal defender"] / n for t in (0, 1)],
             "stuck_s_max": [max(s) if s else None for s in stuck],
             "ball_moving_share": sum(moving) / len(moving) if moving else None,
-            "ball_moving_share_of_play": sum(moving) / sum(playing) if moving and "" not in playing else None}
+            "ball_moving_share_of_play": sum(moving) / sum(playing) if moving and "" not in playing else None,
+            "localisation_worst_mm": [sum(w) / len(w) if w else None for w in worst],
+            "localisation_worst_mm_max": [max(w) if w else None for w in worst]}
 
 
 def main() -> int:
@@ -148,6 +154,10 @@ def report(name: str, team0: str, team1: str, result: dict) -> None:
              if each["ball_moving_share"] is not None else "")
           + (f" ({100 * each['ball_moving_share_of_play']:.0f} % of the time in PLAYING)"
              if each["ball_moving_share_of_play"] is not None else ""))
+    if None not in each["localisation_worst_mm"]:
+        print(f"  localisation, worst robot per match: team 0 {each['localisation_worst_mm'][0]:.0f} mm "
+              f"(largest {each['localisation_worst_mm_max'][0]:.0f}), team 1 {each['localisation_worst_mm'][1]:.0f} mm "
+              f"(largest {each['localisation_worst_mm_max'][1]:.0f})")
 
 
 if __name__ == "__main__":

@@ -32,7 +32,7 @@ STOP_POLL_S = 0.2   # how often a running match checks whether the sweep is stop
 COLUMNS = ["cell", "label", "team0", "team1", "settings", "variant", "seed", "status", "exit_code", "error",
            "goals0", "goals1", "goal_difference", "penalties0", "penalties1", "falls0", "falls1",
            "possession0", "possession_frames0", "possession_frames1", "stuck_s0", "stuck_s1",
-           "ball_moving_share", "playing_share",
+           "ball_moving_share", "playing_share", "localisation_worst_mm0", "localisation_worst_mm1",
            "sim_s", "wall_s", "rtf", "truth_hash", "penalty_kinds"]
 
 
@@ -112,10 +112,15 @@ def from_summary(summary: dict) -> dict:
     penalties = Counter(p["team"] for p in summary["penalties"])
     falls = Counter(f["team"] for f in summary["falls"])
     kinds = Counter(f"{p['team']}:{p['kind']}" for p in summary["penalties"])
+    # Each team's worst robot by the world's localisation_rms_mm (belief against truth over
+    # the frames it was on the field): issue #17's "worst robot RMS" of a refereed match.
+    worst = [max((r["localisation_rms_mm"] for r in summary["robots"] if r["team"] == team), default="")
+             for team in (0, 1)]
     return {"goals0": goals[0], "goals1": goals[1], "goal_difference": goals[0] - goals[1],
             "penalties0": penalties[0], "penalties1": penalties[1], "falls0": falls[0], "falls1": falls[1],
             "sim_s": summary["sim_s"], "wall_s": summary["wall_s"], "rtf": summary["rtf"],
-            "truth_hash": summary["truth_hash"], "penalty_kinds": json.dumps(dict(kinds.most_common()))}
+            "truth_hash": summary["truth_hash"], "penalty_kinds": json.dumps(dict(kinds.most_common())),
+            "localisation_worst_mm0": worst[0], "localisation_worst_mm1": worst[1]}
 
 
 def from_log(stats: dict) -> dict:

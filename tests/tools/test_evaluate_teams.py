@@ -18,7 +18,7 @@ def row(seed, goals0, goals1, status="ok"):
         r.update(goals0=goals0, goals1=goals1, goal_difference=goals0 - goals1, falls0=2, falls1=1, sim_s=1300,
                  penalty_kinds=json.dumps({"0:pushing": 2, "1:illegal defender": 1}), possession_frames0=600,
                  possession_frames1=400, stuck_s0=1.5, stuck_s1=0.0, ball_moving_share=0.2 + seed / 10,
-                 playing_share=0.6)
+                 playing_share=0.6, localisation_worst_mm0=100.0 + seed, localisation_worst_mm1=300.0)
     return r
 
 
@@ -28,14 +28,15 @@ def test_each_experiment_keeps_its_matches_seed_by_seed_and_gains_the_interval()
     first = result["matches"][0]
     assert first == {"seed": 1, "score": [3, 0], "penalties": {"0:pushing": 2, "1:illegal defender": 1}, "falls": 3,
                      "sim_s": 1300, "possession_frames": [600, 400], "stuck_s": [1.5, 0.0], "ball_moving_share": pytest.approx(0.3),
-                     "playing_share": 0.6}
+                     "playing_share": 0.6, "localisation_worst_mm": [101.0, 300.0]}
     assert [m["seed"] for m in result["matches"]] == [1, 2, 3]
     assert result["goal_difference_mean"] == pytest.approx(2 / 3)
     lo, hi = result["goal_difference_ci95"]
     assert lo < 2 / 3 < hi
     assert result["per_match"] == {"pushing": [2, 0], "illegal_defender": [0, 1], "stuck_s_max": [1.5, 0.0],
                                    "ball_moving_share": pytest.approx(0.4),
-                                   "ball_moving_share_of_play": pytest.approx(0.4 / 0.6)}
+                                   "ball_moving_share_of_play": pytest.approx(0.4 / 0.6),
+                                   "localisation_worst_mm": [102.0, 300.0], "localisation_worst_mm_max": [103.0, 300.0]}
 
 
 def test_the_experiments_are_cells_of_one_sweep():

@@ -45,6 +45,7 @@ def test_two_matches_side_by_side_make_one_table(tmp_path):
                    "wall_s", "rtf"):
         assert first[column] != "", column
     assert float(first["sim_s"]) >= 8 and float(first["rtf"]) > 0
+    assert 0 < float(first["localisation_worst_mm0"]) < 5000 and 0 < float(first["localisation_worst_mm1"]) < 5000
     summary = json.loads((tmp_path / "summary.json").read_text())
     assert [(c["cell"], c["matches"], c["failed"]) for c in summary] == [(0, 1, 0), (1, 1, 0)]
     assert (tmp_path / "summary.png").exists() and (tmp_path / "summary.csv").exists()
