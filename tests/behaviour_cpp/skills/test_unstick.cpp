@@ -1,0 +1,129 @@
+// Unstick (issue #17: no robot stuck more than 10 s): turning on the spot for long becomes a
+// walk without turning, towards the ball, the team ball, the field's centre or the goalie's
+// home; the same hand-worked cases as tests/behaviour_py/test_unstick.py.
+#include "touchline/behaviour/skills/unstick.hpp"
+
+#include <optional>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "boards.hpp"
+#include "touchline/behaviour/skills/actioncommand.hpp"
+#include "touchline/behaviour/skills/robot_limits.hpp"
+#include "touchline/behaviour/skills/team.hpp"
+#include "touchline/behaviour/skills/team_comm.hpp"
+
+using namespace touchline::api;
+using namespace touchline::behaviour::skills;
+using touchline::behaviour::test::teamBoard;
+
+namespace {
+
+using AT = ActionCommand::ActionType;
+constexpr int64_t FRAME_US = 33333;
+
+struct Spin {
+  AbsCoord pos{};
+  float turnPerFrame = 0.05f;  ///< rad the odometry turns every frame
+  float stepPerFrame = 0.f;    ///< mm the odometry steps forward (x) every frame
+  bool seen = true;            ///< the own ball (1000 mm ahead of the field origin) seen recently
+  int player = 2;
+  std::vector<TeamMessage> messages{};
+  float ballX = 1000.f, ballY = 0.f;
+};
+
+/// A Spin with `change` applied (C++17 has no designated initialisers).
+template <typename Change>
+Spin spinWith(Change change) {
+  Spin spin;
+  change(spin);
+  return spin;
+}
+
+/// Frame `frame` of a robot whose odometry turns and steps as `spin` says.
+Blackboard spinBoard(int frame, const Spin& spin, bool penalised = false) {
+  Blackboard board = teamBoard(spin.pos, spin.ballX, spin.ballY, spin.seen, spin.seen ? 0 : 1000, GameState::PLAYING,
+                               spin.player, penalised, false, spin.messages, frame * FRAME_US);
+  board.motion.odometry = {spin.stepPerFrame * static_cast<float>(frame), 0.f,
+                           spin.turnPerFrame * static_cast<float>(frame)};
+  return board;
+}
+
+/// The bodies Unstick returns for `frames` frames of turning requests (1.5 rad/s).
+std::vector<ActionCommand::Body> run(Unstick& unstick, int frames, const Spin& spin,
+                                     std::optional<FieldPoint> target = std::nullopt) {
+  std::vector<ActionCommand::Body> bodies;
+  for (int frame = 0; frame < frames; ++frame)
+    bodies.push_back(unstick.tick(spinBoard(frame, spin), touchline::behaviour::actioncommand::walk(0.f, 0.f, 1.5f), target));
+  return bodies;
+}
+
+} // namespace
+
+TEST(Unstick, TurningOnTheSpotForTheWindowBecomesAWalkToTheBallWithoutTurning) {
+  Unstick unstick;
+  const auto bodies = run(unstick, UNSTICK_WINDOW_FRAMES + UNSTICK_RECOVER_FRAMES + 1, Spin{});
+  for (int i = 0; i < UNSTICK_WINDOW_FRAMES - 1; ++i) EXPECT_FLOAT_EQ(bodies[i].turn, 1.5f) << i;
+  for (int i = UNSTICK_WINDOW_FRAMES - 1; i < UNSTICK_WINDOW_FRAMES - 1 + UNSTICK_RECOVER_FRAMES; ++i) {
+    EXPECT_EQ(bodies[i].actionType, AT::WALK) << i; // the ball 1000 mm ahead: straight at it, at full speed
+    EXPECT_NEAR(bodies[i].forward, MAX_FORWARD, 1e-3f) << i;
+    EXPECT_NEAR(bodies[i].left, 0.f, 1e-3f) << i;
+    EXPECT_EQ(bodies[i].turn, 0.f) << i;
+  }
+  EXPECT_FLOAT_EQ(bodies.back().turn, 1.5f); // recovered: the request again, the window afresh
+}
+
+TEST(Unstick, WalkingOrTurningSlowlyIsNotStuck) {
+  Unstick walking, slow;
+  for (const auto& b : run(walking, 400, spinWith([](Spin& s) { s.stepPerFrame = 2.f; })))
+    EXPECT_FLOAT_EQ(b.turn, 1.5f); // 2 mm/frame: 358 mm in 6 s
+  for (const auto& b : run(slow, 400, spinWith([](Spin& s) { s.turnPerFrame = 0.02f; })))
+    EXPECT_FLOAT_EQ(b.turn, 1.5f); // 3.6 rad in 6 s
+}
+
+TEST(Unstick, WithoutTheOwnBallItWalksToTheTeamBallElseTheCentreAndTheGoalieHome) {
+  Unstick centre, team, goalie;
+  // No ball known: back to the centre, 500 mm behind.
+  const Spin behind = spinWith([](Spin& s) {
+    s.pos = {500.f, 0.f, 0.f};
+    s.seen = false;
+  });
+  EXPECT_NEAR(run(centre, UNSTICK_WINDOW_FRAMES, behind).back().forward, -MAX_BACKWARD, 1e-3f);
+  const TeamInfo info{3, ROLE_DEFENDER, true, false, false, 500, 0, 400};
+  const Spin teamBall = spinWith([&](Spin& s) {
+    s.seen = false;
+    s.messages = {{3, UNSTICK_WINDOW_FRAMES * FRAME_US, encodeMessage(info)}};
+  });
+  const ActionCommand::Body toTeamBall = run(team, UNSTICK_WINDOW_FRAMES, teamBall).back(); // 400 mm to the left
+  EXPECT_NEAR(toTeamBall.forward, 0.f, 1e-3f);
+  EXPECT_NEAR(toTeamBall.left, 200.f, 1e-3f);
+  EXPECT_EQ(toTeamBall.turn, 0.f);
+  const ActionCommand::Body home =
+      run(goalie, UNSTICK_WINDOW_FRAMES, spinWith([](Spin& s) {
+            s.pos = {-2000.f, 0.f, 0.f};
+            s.player = 1;
+          }),
+          FieldPoint{-2700.f, 0.f})
+          .back();
+  EXPECT_NEAR(home.forward, -MAX_BACKWARD, 1e-3f);
+  EXPECT_NEAR(home.left, 0.f, 1e-3f);
+  EXPECT_EQ(home.turn, 0.f);
+}
+
+TEST(Unstick, TheTeamUnsticksInPlayOnlyAndStartsAfreshAfterAPenalty) {
+  Team team(ROLE_STRIKER);
+  const Spin left = spinWith([](Spin& s) { // the ball to the left: the striker turns to it
+    s.ballX = 0.f;
+    s.ballY = 1000.f;
+  });
+  const int frames = UNSTICK_WINDOW_FRAMES - 1;
+  for (int frame = 0; frame < frames; ++frame) team.tick(spinBoard(frame, left));
+  team.tick(spinBoard(frames, left, true));
+  EXPECT_GT(team.tick(spinBoard(frames + 1, left)).body.turn, 0.f); // the window starts again
+  ActionCommand::Body body;
+  for (int frame = frames + 2; frame < frames + 1 + UNSTICK_WINDOW_FRAMES; ++frame)
+    body = team.tick(spinBoard(frame, left)).body;
+  EXPECT_EQ(body.turn, 0.f); // a full window in play: sideways to the ball
+  EXPECT_NEAR(body.left, 200.f, 1e-3f);
+}
