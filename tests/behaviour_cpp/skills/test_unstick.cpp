@@ -53,9 +53,9 @@ Blackboard spinBoard(int frame, const Spin& spin, bool penalised = false) {
 /// The bodies Unstick returns for `frames` frames of turning requests (1.5 rad/s).
 std::vector<ActionCommand::Body> run(Unstick& unstick, int frames, const Spin& spin,
                                      std::optional<FieldPoint> target = std::nullopt) {
+  const ActionCommand::Body turning = touchline::behaviour::actioncommand::walk(0.f, 0.f, 1.5f);
   std::vector<ActionCommand::Body> bodies;
-  for (int frame = 0; frame < frames; ++frame)
-    bodies.push_back(unstick.tick(spinBoard(frame, spin), touchline::behaviour::actioncommand::walk(0.f, 0.f, 1.5f), target));
+  for (int frame = 0; frame < frames; ++frame) bodies.push_back(unstick.tick(spinBoard(frame, spin), turning, target));
   return bodies;
 }
 
@@ -77,9 +77,9 @@ TEST(Unstick, TurningOnTheSpotForTheWindowBecomesAWalkToTheBallWithoutTurning) {
 TEST(Unstick, WalkingOrTurningSlowlyIsNotStuck) {
   Unstick walking, slow;
   for (const auto& b : run(walking, 400, spinWith([](Spin& s) { s.stepPerFrame = 2.f; })))
-    EXPECT_FLOAT_EQ(b.turn, 1.5f); // 2 mm/frame: 358 mm in 6 s
-  for (const auto& b : run(slow, 400, spinWith([](Spin& s) { s.turnPerFrame = 0.02f; })))
-    EXPECT_FLOAT_EQ(b.turn, 1.5f); // 3.6 rad in 6 s
+    EXPECT_FLOAT_EQ(b.turn, 1.5f); // 2 mm/frame: 478 mm in 8 s
+  for (const auto& b : run(slow, 400, spinWith([](Spin& s) { s.turnPerFrame = 0.015f; })))
+    EXPECT_FLOAT_EQ(b.turn, 1.5f); // 3.6 rad in 8 s
 }
 
 TEST(Unstick, WithoutTheOwnBallItWalksToTheTeamBallElseTheCentreAndTheGoalieHome) {
