@@ -4,7 +4,8 @@ turn, a target or ball that flips side as localisation jumps, roles swapping bet
 targets, a walk that cannot get past a crowd. Reads motion.odometry (what the walk did, free
 of localisation's jumps), localisation, gameController and receiver; writes nothing.
 
-  stuck:    over the last UNSTICK_WINDOW_FRAMES ticks the odometry turned more than
+  stuck:    over the last UNSTICK_WINDOW_FRAMES ticks (fewer since play resumed or the last
+            recovery: a fast spin is caught early) the odometry turned more than
             UNSTICK_TURN_RAD in all while its net move stayed under UNSTICK_MOVE_MM.
   recovery: UNSTICK_RECOVER_FRAMES ticks of walking without turning (forward and sideways)
             towards the ball (the own if seen recently, else the team ball) or, without
@@ -51,7 +52,7 @@ class Unstick:
         if len(self.odometry) > UNSTICK_WINDOW_FRAMES:
             del self.odometry[0]
             del self.turned[0]
-        if self.recovering == 0 and len(self.odometry) == UNSTICK_WINDOW_FRAMES and self.stuck():
+        if self.recovering == 0 and self.stuck():
             self.recovering = UNSTICK_RECOVER_FRAMES
         if self.recovering == 0:
             return body

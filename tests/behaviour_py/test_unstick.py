@@ -9,13 +9,16 @@ from boards import board, message
 from skills.robot_limits import MAX_BACKWARD, MAX_FORWARD
 from skills.team import Team
 from skills.team_comm import ROLE_DEFENDER, ROLE_STRIKER, TeamInfo, encodeMessage
-from skills.unstick import UNSTICK_RECOVER_FRAMES, UNSTICK_WINDOW_FRAMES, Unstick
+from skills.unstick import UNSTICK_RECOVER_FRAMES, UNSTICK_TURN_RAD, UNSTICK_WINDOW_FRAMES, Unstick
 
 WALK = robot.ActionType.WALK
 FRAME_US = 33333
 
 
-def spinBoard(frame, pos=(0.0, 0.0, 0.0), turnPerFrame=0.05, stepPerFrame=0.0, **kwargs):
+STUCK_FRAME = 67  # at 0.06 rad a frame the odometry has turned over UNSTICK_TURN_RAD (4.02 rad) on this tick
+
+
+def spinBoard(frame, pos=(0.0, 0.0, 0.0), turnPerFrame=0.06, stepPerFrame=0.0, **kwargs):
     """Frame `frame` of a robot whose odometry turns turnPerFrame rad and steps stepPerFrame mm
     forward (odometry x) every frame."""
     return board(pos, utime=frame * FRAME_US, odometry=(stepPerFrame * frame, 0.0, turnPerFrame * frame), **kwargs)
@@ -31,38 +34,43 @@ def run(unstick, frames, target=None, **kwargs):
 
 
 def test_turning_on_the_spot_for_the_window_becomes_a_walk_to_the_ball_without_turning():
-    bodies = run(Unstick(), UNSTICK_WINDOW_FRAMES + UNSTICK_RECOVER_FRAMES + 1)  # 1.5 rad/s, 12 rad in 8 s
-    assert all(b.turn == pytest.approx(1.5) for b in bodies[:UNSTICK_WINDOW_FRAMES - 1])
-    recovery = bodies[UNSTICK_WINDOW_FRAMES - 1:UNSTICK_WINDOW_FRAMES - 1 + UNSTICK_RECOVER_FRAMES]
+    bodies = run(Unstick(), STUCK_FRAME + UNSTICK_RECOVER_FRAMES + 1)  # 1.8 rad/s
+    assert all(b.turn == pytest.approx(1.5) for b in bodies[:STUCK_FRAME])
+    recovery = bodies[STUCK_FRAME:STUCK_FRAME + UNSTICK_RECOVER_FRAMES]
     for b in recovery:  # the ball 1000 mm ahead: straight at it, at full speed
         assert (b.actionType, b.forward, b.left, b.turn) == (WALK, pytest.approx(MAX_FORWARD), pytest.approx(0.0), 0.0)
     assert bodies[-1].turn == pytest.approx(1.5)  # recovered: the request again, the window afresh
 
 
+def test_the_window_and_limit_the_cases_rely_on():
+    assert 0.06 * (STUCK_FRAME - 1) < UNSTICK_TURN_RAD < 0.06 * STUCK_FRAME
+    assert 0.015 * (UNSTICK_WINDOW_FRAMES - 1) < UNSTICK_TURN_RAD
+
+
 def test_walking_or_turning_slowly_is_not_stuck():
-    assert all(b.turn == pytest.approx(1.5) for b in run(Unstick(), 400, stepPerFrame=2.0))  # 2 mm/frame: 478 mm in 8 s
+    assert all(b.turn == pytest.approx(1.5) for b in run(Unstick(), 400, stepPerFrame=4.0))  # 268 mm in 67 frames
     assert all(b.turn == pytest.approx(1.5) for b in run(Unstick(), 400, turnPerFrame=0.015))  # 3.6 rad in 8 s
 
 
 def test_without_the_own_ball_it_walks_to_the_team_ball_else_the_centre_and_the_goalie_home():
     lost = dict(seen=False, lost=1000)
-    assert run(Unstick(), UNSTICK_WINDOW_FRAMES, pos=(500.0, 0.0, 0.0), **lost)[-1].forward == pytest.approx(
+    assert run(Unstick(), STUCK_FRAME + 1, pos=(500.0, 0.0, 0.0), **lost)[-1].forward == pytest.approx(
         -MAX_BACKWARD)  # no ball known: back to the centre, 500 mm behind
     info = TeamInfo(3, ROLE_DEFENDER, True, False, False, 500, 0, 400)
-    teamBall = dict(messages=[message(3, encodeMessage(info), UNSTICK_WINDOW_FRAMES * FRAME_US)], **lost)
-    body = run(Unstick(), UNSTICK_WINDOW_FRAMES, **teamBall)[-1]  # the team ball 400 mm to the left
+    teamBall = dict(messages=[message(3, encodeMessage(info), STUCK_FRAME * FRAME_US)], **lost)
+    body = run(Unstick(), STUCK_FRAME + 1, **teamBall)[-1]  # the team ball 400 mm to the left
     assert (body.forward, body.left, body.turn) == (pytest.approx(0.0, abs=1e-3), pytest.approx(200.0), 0.0)
-    body = run(Unstick(), UNSTICK_WINDOW_FRAMES, target=(-2700.0, 0.0), pos=(-2000.0, 0.0, 0.0), player=1)[-1]
+    body = run(Unstick(), STUCK_FRAME + 1, target=(-2700.0, 0.0), pos=(-2000.0, 0.0, 0.0), player=1)[-1]
     assert (body.forward, body.left, body.turn) == (pytest.approx(-MAX_BACKWARD), pytest.approx(0.0, abs=1e-3), 0.0)
 
 
 def test_the_team_unsticks_in_play_only_and_starts_afresh_after_a_penalty():
     team = Team(ROLE_STRIKER)
-    frames = UNSTICK_WINDOW_FRAMES - 1
+    frames = STUCK_FRAME - 1
     for frame in range(frames):  # the ball to the left: the striker turns to it, the odometry says it spins
         team.tick(spinBoard(frame, ball=(0.0, 1000.0)))
     team.tick(spinBoard(frames, ball=(0.0, 1000.0), penalised=True))
-    assert team.tick(spinBoard(frames + 1, ball=(0.0, 1000.0))).body.turn > 0.0  # the window starts again
-    for frame in range(frames + 2, frames + 1 + UNSTICK_WINDOW_FRAMES):
-        body = team.tick(spinBoard(frame, ball=(0.0, 1000.0))).body
-    assert (body.turn, body.left) == (0.0, pytest.approx(200.0))  # a full window in play: sideways to the ball
+    for frame in range(frames + 1, frames + 1 + STUCK_FRAME):  # the window starts again
+        assert team.tick(spinBoard(frame, ball=(0.0, 1000.0))).body.turn > 0.0
+    body = team.tick(spinBoard(frames + 1 + STUCK_FRAME, ball=(0.0, 1000.0))).body
+    assert (body.turn, body.left) == (0.0, pytest.approx(200.0))  # stuck in play: sideways to the ball

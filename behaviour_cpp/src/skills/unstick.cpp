@@ -27,8 +27,7 @@ ActionCommand::Body Unstick::tick(const Blackboard& blackboard, const ActionComm
     odometry_.pop_front();
     turned_.pop_front();
   }
-  if (recovering_ == 0 && odometry_.size() == static_cast<size_t>(UNSTICK_WINDOW_FRAMES) && stuck())
-    recovering_ = UNSTICK_RECOVER_FRAMES;
+  if (recovering_ == 0 && stuck()) recovering_ = UNSTICK_RECOVER_FRAMES;
   if (recovering_ == 0) return body;
   if (--recovering_ == 0) {
     odometry_.clear();

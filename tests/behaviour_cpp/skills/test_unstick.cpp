@@ -22,10 +22,11 @@ namespace {
 
 using AT = ActionCommand::ActionType;
 constexpr int64_t FRAME_US = 33333;
+constexpr int STUCK_FRAME = 67; ///< at 0.06 rad a frame, the tick the odometry has turned over UNSTICK_TURN_RAD
 
 struct Spin {
   AbsCoord pos{};
-  float turnPerFrame = 0.05f;  ///< rad the odometry turns every frame
+  float turnPerFrame = 0.06f;  ///< rad the odometry turns every frame
   float stepPerFrame = 0.f;    ///< mm the odometry steps forward (x) every frame
   bool seen = true;            ///< the own ball (1000 mm ahead of the field origin) seen recently
   int player = 2;
@@ -63,9 +64,9 @@ std::vector<ActionCommand::Body> run(Unstick& unstick, int frames, const Spin& s
 
 TEST(Unstick, TurningOnTheSpotForTheWindowBecomesAWalkToTheBallWithoutTurning) {
   Unstick unstick;
-  const auto bodies = run(unstick, UNSTICK_WINDOW_FRAMES + UNSTICK_RECOVER_FRAMES + 1, Spin{});
-  for (int i = 0; i < UNSTICK_WINDOW_FRAMES - 1; ++i) EXPECT_FLOAT_EQ(bodies[i].turn, 1.5f) << i;
-  for (int i = UNSTICK_WINDOW_FRAMES - 1; i < UNSTICK_WINDOW_FRAMES - 1 + UNSTICK_RECOVER_FRAMES; ++i) {
+  const auto bodies = run(unstick, STUCK_FRAME + UNSTICK_RECOVER_FRAMES + 1, Spin{});
+  for (int i = 0; i < STUCK_FRAME; ++i) EXPECT_FLOAT_EQ(bodies[i].turn, 1.5f) << i;
+  for (int i = STUCK_FRAME; i < STUCK_FRAME + UNSTICK_RECOVER_FRAMES; ++i) {
     EXPECT_EQ(bodies[i].actionType, AT::WALK) << i; // the ball 1000 mm ahead: straight at it, at full speed
     EXPECT_NEAR(bodies[i].forward, MAX_FORWARD, 1e-3f) << i;
     EXPECT_NEAR(bodies[i].left, 0.f, 1e-3f) << i;
@@ -74,10 +75,16 @@ TEST(Unstick, TurningOnTheSpotForTheWindowBecomesAWalkToTheBallWithoutTurning) {
   EXPECT_FLOAT_EQ(bodies.back().turn, 1.5f); // recovered: the request again, the window afresh
 }
 
+TEST(Unstick, TheWindowAndLimitTheCasesRelyOn) {
+  EXPECT_LT(0.06f * (STUCK_FRAME - 1), UNSTICK_TURN_RAD);
+  EXPECT_GT(0.06f * STUCK_FRAME, UNSTICK_TURN_RAD);
+  EXPECT_LT(0.015f * (UNSTICK_WINDOW_FRAMES - 1), UNSTICK_TURN_RAD);
+}
+
 TEST(Unstick, WalkingOrTurningSlowlyIsNotStuck) {
   Unstick walking, slow;
-  for (const auto& b : run(walking, 400, spinWith([](Spin& s) { s.stepPerFrame = 2.f; })))
-    EXPECT_FLOAT_EQ(b.turn, 1.5f); // 2 mm/frame: 478 mm in 8 s
+  for (const auto& b : run(walking, 400, spinWith([](Spin& s) { s.stepPerFrame = 4.f; })))
+    EXPECT_FLOAT_EQ(b.turn, 1.5f); // 268 mm in 67 frames
   for (const auto& b : run(slow, 400, spinWith([](Spin& s) { s.turnPerFrame = 0.015f; })))
     EXPECT_FLOAT_EQ(b.turn, 1.5f); // 3.6 rad in 8 s
 }
@@ -89,18 +96,18 @@ TEST(Unstick, WithoutTheOwnBallItWalksToTheTeamBallElseTheCentreAndTheGoalieHome
     s.pos = {500.f, 0.f, 0.f};
     s.seen = false;
   });
-  EXPECT_NEAR(run(centre, UNSTICK_WINDOW_FRAMES, behind).back().forward, -MAX_BACKWARD, 1e-3f);
+  EXPECT_NEAR(run(centre, STUCK_FRAME + 1, behind).back().forward, -MAX_BACKWARD, 1e-3f);
   const TeamInfo info{3, ROLE_DEFENDER, true, false, false, 500, 0, 400};
   const Spin teamBall = spinWith([&](Spin& s) {
     s.seen = false;
-    s.messages = {{3, UNSTICK_WINDOW_FRAMES * FRAME_US, encodeMessage(info)}};
+    s.messages = {{3, STUCK_FRAME * FRAME_US, encodeMessage(info)}};
   });
-  const ActionCommand::Body toTeamBall = run(team, UNSTICK_WINDOW_FRAMES, teamBall).back(); // 400 mm to the left
+  const ActionCommand::Body toTeamBall = run(team, STUCK_FRAME + 1, teamBall).back(); // 400 mm to the left
   EXPECT_NEAR(toTeamBall.forward, 0.f, 1e-3f);
   EXPECT_NEAR(toTeamBall.left, 200.f, 1e-3f);
   EXPECT_EQ(toTeamBall.turn, 0.f);
   const ActionCommand::Body home =
-      run(goalie, UNSTICK_WINDOW_FRAMES, spinWith([](Spin& s) {
+      run(goalie, STUCK_FRAME + 1, spinWith([](Spin& s) {
             s.pos = {-2000.f, 0.f, 0.f};
             s.player = 1;
           }),
@@ -117,13 +124,12 @@ TEST(Unstick, TheTeamUnsticksInPlayOnlyAndStartsAfreshAfterAPenalty) {
     s.ballX = 0.f;
     s.ballY = 1000.f;
   });
-  const int frames = UNSTICK_WINDOW_FRAMES - 1;
+  const int frames = STUCK_FRAME - 1;
   for (int frame = 0; frame < frames; ++frame) team.tick(spinBoard(frame, left));
   team.tick(spinBoard(frames, left, true));
-  EXPECT_GT(team.tick(spinBoard(frames + 1, left)).body.turn, 0.f); // the window starts again
-  ActionCommand::Body body;
-  for (int frame = frames + 2; frame < frames + 1 + UNSTICK_WINDOW_FRAMES; ++frame)
-    body = team.tick(spinBoard(frame, left)).body;
-  EXPECT_EQ(body.turn, 0.f); // a full window in play: sideways to the ball
+  for (int frame = frames + 1; frame < frames + 1 + STUCK_FRAME; ++frame) // the window starts again
+    EXPECT_GT(team.tick(spinBoard(frame, left)).body.turn, 0.f) << frame;
+  const ActionCommand::Body body = team.tick(spinBoard(frames + 1 + STUCK_FRAME, left)).body;
+  EXPECT_EQ(body.turn, 0.f); // stuck in play: sideways to the ball
   EXPECT_NEAR(body.left, 200.f, 1e-3f);
 }
