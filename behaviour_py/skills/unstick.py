@@ -6,7 +6,9 @@ of localisation's jumps), localisation, gameController and receiver; writes noth
 
   stuck:    over the last UNSTICK_WINDOW_FRAMES ticks (fewer since play resumed or the last
             recovery: a fast spin is caught early) the odometry turned more than
-            UNSTICK_TURN_RAD in all while its net move stayed under UNSTICK_MOVE_MM.
+            UNSTICK_TURN_RAD in all while the net move, by odometry or by localisation (the
+            smaller: a walk against a robot steps on in odometry only), stayed under
+            UNSTICK_MOVE_MM.
   recovery: UNSTICK_RECOVER_FRAMES ticks of walking without turning (forward and sideways)
             towards the ball (the own if seen recently, else the team ball) or, without
             either, the field's centre; the goalie towards its home. Through Avoid. Then the
@@ -24,14 +26,14 @@ from .robot_limits import clampWalk
 from .search import teamBall
 
 UNSTICK_WINDOW_FRAMES = 240     # frames (8 s) of odometry looked back over ...
-UNSTICK_TURN_RAD = 4.0          # rad: ... turning more than this in all (never: < 5 rad in 10 s) ...
+UNSTICK_TURN_RAD = 3.5          # rad: ... turning more than this in all (never: < 4.4 rad in 10 s) ...
 UNSTICK_MOVE_MM = 200.0         # mm: ... while moving less than this net: stuck
 UNSTICK_RECOVER_FRAMES = 60     # frames (2 s) of walking without turning
 
 
 class Unstick:
     def __init__(self):
-        self.odometry = []  # the window's odometry poses (x, y, theta), oldest first
+        self.odometry = []  # the window's odometry poses and localised positions (x, y, theta, x, y), oldest first
         self.turned = []    # |heading change| (rad) between consecutive poses of the window
         self.recovering = 0  # recovery ticks left
         self.avoid = Avoid()
@@ -48,7 +50,8 @@ class Unstick:
         odometry = blackboard.motion.odometry
         if self.odometry:
             self.turned.append(abs(robot.normaliseTheta(odometry.theta - self.odometry[-1][2])))
-        self.odometry.append((odometry.x, odometry.y, odometry.theta))
+        pos = blackboard.localisation.robotPos
+        self.odometry.append((odometry.x, odometry.y, odometry.theta, pos.x, pos.y))
         if len(self.odometry) > UNSTICK_WINDOW_FRAMES:
             del self.odometry[0]
             del self.turned[0]
@@ -66,8 +69,9 @@ class Unstick:
         return self.avoid.tick(blackboard, actioncommand.walk(forward, left, 0.0), toTarget.distance)
 
     def stuck(self):
-        (x0, y0, _), (x1, y1, _) = self.odometry[0], self.odometry[-1]
-        return sum(self.turned) > UNSTICK_TURN_RAD and math.hypot(x1 - x0, y1 - y0) < UNSTICK_MOVE_MM
+        (x0, y0, _, u0, v0), (x1, y1, _, u1, v1) = self.odometry[0], self.odometry[-1]
+        moved = min(math.hypot(x1 - x0, y1 - y0), math.hypot(u1 - u0, v1 - v0))
+        return sum(self.turned) > UNSTICK_TURN_RAD and moved < UNSTICK_MOVE_MM
 
     @staticmethod
     def walkTarget(blackboard, target):

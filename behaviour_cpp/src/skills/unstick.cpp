@@ -1,5 +1,6 @@
 #include "touchline/behaviour/skills/unstick.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "touchline/behaviour/skills/actioncommand.hpp"
@@ -14,6 +15,7 @@ using namespace api;
 
 void Unstick::reset() {
   odometry_.clear();
+  positions_.clear();
   turned_.clear();
   recovering_ = 0;
 }
@@ -23,14 +25,17 @@ ActionCommand::Body Unstick::tick(const Blackboard& blackboard, const ActionComm
   const AbsCoord odometry = blackboard.motion.odometry;
   if (!odometry_.empty()) turned_.push_back(std::fabs(normaliseTheta(odometry.theta - odometry_.back().theta)));
   odometry_.push_back(odometry);
+  positions_.push_back({blackboard.localisation.robotPos.x, blackboard.localisation.robotPos.y});
   if (odometry_.size() > static_cast<size_t>(UNSTICK_WINDOW_FRAMES)) {
     odometry_.pop_front();
+    positions_.pop_front();
     turned_.pop_front();
   }
   if (recovering_ == 0 && stuck()) recovering_ = UNSTICK_RECOVER_FRAMES;
   if (recovering_ == 0) return body;
   if (--recovering_ == 0) {
     odometry_.clear();
+    positions_.clear();
     turned_.clear();
   }
   const FieldPoint walkTo = walkTarget(blackboard, target);
@@ -44,7 +49,11 @@ bool Unstick::stuck() const {
   for (const float t : turned_) turned += t;
   const AbsCoord& first = odometry_.front();
   const AbsCoord& last = odometry_.back();
-  return turned > UNSTICK_TURN_RAD && std::hypot(last.x - first.x, last.y - first.y) < UNSTICK_MOVE_MM;
+  // The smaller of the two: a walk against a robot steps on in odometry only.
+  const float moved = std::min(std::hypot(last.x - first.x, last.y - first.y),
+                               std::hypot(positions_.back().x - positions_.front().x,
+                                          positions_.back().y - positions_.front().y));
+  return turned > UNSTICK_TURN_RAD && moved < UNSTICK_MOVE_MM;
 }
 
 FieldPoint Unstick::walkTarget(const Blackboard& blackboard, std::optional<FieldPoint> target) {

@@ -22,12 +22,13 @@ namespace {
 
 using AT = ActionCommand::ActionType;
 constexpr int64_t FRAME_US = 33333;
-constexpr int STUCK_FRAME = 67; ///< at 0.06 rad a frame, the tick the odometry has turned over UNSTICK_TURN_RAD
+constexpr int STUCK_FRAME = 59; ///< at 0.06 rad a frame, the tick the odometry has turned over UNSTICK_TURN_RAD
 
 struct Spin {
   AbsCoord pos{};
   float turnPerFrame = 0.06f;  ///< rad the odometry turns every frame
-  float stepPerFrame = 0.f;    ///< mm the odometry steps forward (x) every frame
+  float stepPerFrame = 0.f;    ///< mm the odometry steps forward (x) every frame ...
+  bool localised = true;       ///< ... which localisation sees along field x from pos (false: it stays at pos)
   bool seen = true;            ///< the own ball (1000 mm ahead of the field origin) seen recently
   int player = 2;
   std::vector<TeamMessage> messages{};
@@ -44,7 +45,9 @@ Spin spinWith(Change change) {
 
 /// Frame `frame` of a robot whose odometry turns and steps as `spin` says.
 Blackboard spinBoard(int frame, const Spin& spin, bool penalised = false) {
-  Blackboard board = teamBoard(spin.pos, spin.ballX, spin.ballY, spin.seen, spin.seen ? 0 : 1000, GameState::PLAYING,
+  AbsCoord pos = spin.pos;
+  if (spin.localised) pos.x += spin.stepPerFrame * static_cast<float>(frame);
+  Blackboard board = teamBoard(pos, spin.ballX, spin.ballY, spin.seen, spin.seen ? 0 : 1000, GameState::PLAYING,
                                spin.player, penalised, false, spin.messages, frame * FRAME_US);
   board.motion.odometry = {spin.stepPerFrame * static_cast<float>(frame), 0.f,
                            spin.turnPerFrame * static_cast<float>(frame)};
@@ -78,15 +81,25 @@ TEST(Unstick, TurningOnTheSpotForTheWindowBecomesAWalkToTheBallWithoutTurning) {
 TEST(Unstick, TheWindowAndLimitTheCasesRelyOn) {
   EXPECT_LT(0.06f * (STUCK_FRAME - 1), UNSTICK_TURN_RAD);
   EXPECT_GT(0.06f * STUCK_FRAME, UNSTICK_TURN_RAD);
-  EXPECT_LT(0.015f * (UNSTICK_WINDOW_FRAMES - 1), UNSTICK_TURN_RAD);
+  EXPECT_LT(0.012f * (UNSTICK_WINDOW_FRAMES - 1), UNSTICK_TURN_RAD);
 }
 
 TEST(Unstick, WalkingOrTurningSlowlyIsNotStuck) {
   Unstick walking, slow;
   for (const auto& b : run(walking, 400, spinWith([](Spin& s) { s.stepPerFrame = 4.f; })))
-    EXPECT_FLOAT_EQ(b.turn, 1.5f); // 268 mm in 67 frames
-  for (const auto& b : run(slow, 400, spinWith([](Spin& s) { s.turnPerFrame = 0.015f; })))
-    EXPECT_FLOAT_EQ(b.turn, 1.5f); // 3.6 rad in 8 s
+    EXPECT_FLOAT_EQ(b.turn, 1.5f); // 236 mm in 59 frames
+  for (const auto& b : run(slow, 400, spinWith([](Spin& s) { s.turnPerFrame = 0.012f; })))
+    EXPECT_FLOAT_EQ(b.turn, 1.5f); // 2.9 rad in 8 s
+}
+
+TEST(Unstick, AWalkThatStepsOnInOdometryOnlyIsStuck) {
+  Unstick unstick;
+  const auto bodies = run(unstick, STUCK_FRAME + 1, spinWith([](Spin& s) {
+                            s.stepPerFrame = 4.f;
+                            s.localised = false;
+                          }));
+  EXPECT_FLOAT_EQ(bodies[STUCK_FRAME - 1].turn, 1.5f);
+  EXPECT_EQ(bodies[STUCK_FRAME].turn, 0.f);
 }
 
 TEST(Unstick, WithoutTheOwnBallItWalksToTheTeamBallElseTheCentreAndTheGoalieHome) {

@@ -12,7 +12,7 @@
 namespace touchline::behaviour::skills {
 
 inline constexpr int UNSTICK_WINDOW_FRAMES = 240;   ///< frames (8 s) of odometry looked back over ...
-inline constexpr float UNSTICK_TURN_RAD = 4.f;      ///< rad: ... turning more than this (never: < 5 rad in 10 s) ...
+inline constexpr float UNSTICK_TURN_RAD = 3.5f;     ///< rad: ... turning more than this (never: < 4.4 rad in 10 s) ...
 inline constexpr float UNSTICK_MOVE_MM = 200.f;     ///< mm: ... while moving less than this net: stuck
 inline constexpr int UNSTICK_RECOVER_FRAMES = 60;   ///< frames (2 s) of walking without turning
 
@@ -30,6 +30,7 @@ class Unstick {
   static FieldPoint walkTarget(const api::Blackboard& blackboard, std::optional<FieldPoint> target);
 
   std::deque<api::AbsCoord> odometry_; ///< the window's odometry poses, oldest first
+  std::deque<FieldPoint> positions_;   ///< the window's localised positions, oldest first
   std::deque<float> turned_;           ///< |heading change| (rad) between consecutive poses of the window
   int recovering_ = 0;                 ///< recovery ticks left
   Avoid avoid_;
