@@ -97,10 +97,109 @@ def ball_moving(path: list) -> bool:
 
 def stuck(h: list, edge_x: float, edge_y: float) -> bool:
     """Whether the robot whose samples end `h` is stuck over the last STUCK_WINDOW samples."""
+    return stuck_kind(h, edge_x, edge_y) is not None
+
+
+def stuck_kind(h: list, edge_x: float, edge_y: float) -> str | None:
+    """How the robot whose samples end `h` is stuck over the last STUCK_WINDOW samples:
+    "spin", "wall", or None when it is not."""
     window = h[-STUCK_WINDOW:]
     moved = math.hypot(window[-1][0] - window[0][0], window[-1][1] - window[0][1])
     if moved >= STUCK_MOVE_MM:
-        return False
+        return None
     turned = sum(abs(math.remainder(b[2] - a[2], 2 * math.pi)) for a, b in zip(window, window[1:]))
+    if turned > SPIN_RAD:
+        return "spin"
     at_wall = min(min(edge_x - abs(x), edge_y - abs(y)) for x, y, *_ in window) < WALL_MARGIN_MM
-    return turned > SPIN_RAD or at_wall
+    return "wall" if at_wall else None
+
+
+EPISODE_GAP_S = 5.0  # s: stuck samples this close together are one episode (the test flickers at its limits)
+ROLE_NAMES = {1: "goalie", 2: "striker", 3: "defender", 4: "midfielder"}  # team_comm.py's role byte
+
+
+def stuck_episodes(log: Path) -> list[dict]:
+    """Every stuck episode of a match (for finding why robots get stuck): a robot's run of
+    stuck samples, as analyse_log counts them, from the start of its first window (time_s,
+    simulated seconds since the log's first TL_TRUTH) to its last stuck sample (length_s),
+    gaps up to EPISODE_GAP_S included,
+    with its team, player, kind (of the first sample: spin or wall), the role of its last
+    team message before the episode (team_comm.py's byte 2; "" without messages) and, at
+    the episode's start, its believed ball_lost_frames and its pose (truth and believed), and
+    the most its feet's headings differed during it (max_twist_rad: near pi, the feet face apart
+    and their mean heading flips, which counts as turning)."""
+    import lcm
+    from touchline import act_t, game_state_t, match_config_t, world_truth_t
+
+    playing = False
+    history = defaultdict(list)
+    acts = {}  # (team, player) -> [role, ball_lost_frames, believed (x, y, theta)]
+    open_runs = {}  # (team, player) -> the episode being extended
+    episodes = []
+    edge_x = edge_y = t0 = None
+    truth_frames = 0
+    for event in lcm.EventLog(str(log), "r"):
+        if event.channel == "TL_MATCH" and edge_x is None:
+            match = match_config_t.decode(event.data)
+            edge_x, edge_y = (size / 2 + match.border_mm for size in (match.field_length_mm, match.field_width_mm))
+        elif event.channel == "TL_GAME":
+            playing = game_state_t.decode(event.data).state == game_state_t.PLAYING
+        elif event.channel.startswith("TL_ACT_"):
+            act = act_t.decode(event.data)
+            state = acts.setdefault((act.team, act.player), ["", 0, None])
+            if act.team_message_size >= 3:
+                state[0] = ROLE_NAMES.get(act.team_message[2], str(act.team_message[2]))
+            state[1:] = [act.ball_lost_frames, (act.localised.x_mm, act.localised.y_mm, act.localised.theta_rad)]
+        elif event.channel == "TL_TRUTH":
+            truth_frames += 1
+            if truth_frames % SAMPLE_EVERY:
+                continue
+            truth = world_truth_t.decode(event.data)
+            t0 = truth.utime if t0 is None else t0
+            t = (truth.utime - t0) / 1e6
+            for r in truth.robots:
+                key = (r.team, r.player)
+                counts = playing and r.active and not r.penalised and not r.fallen
+                h = history[key]
+                h.append((r.body.x_mm, r.body.y_mm, r.body.theta_rad, counts))
+                kind = (stuck_kind(h, edge_x, edge_y) if counts and len(h) > STUCK_WINDOW
+                        and all(c for *_, c in h[-STUCK_WINDOW:]) else None)
+                if len(h) > STUCK_WINDOW + 1:
+                    del h[0]
+                run = open_runs.get(key)
+                twist = abs(math.remainder(r.left_foot.theta_rad - r.right_foot.theta_rad, 2 * math.pi))
+                if run:
+                    run["max_twist_rad"] = max(run["max_twist_rad"], round(twist, 2))
+                if kind is None:
+                    if run and t - run["time_s"] - run["length_s"] > EPISODE_GAP_S:
+                        del open_runs[key]
+                elif run:
+                    run["length_s"] = round(t - run["time_s"], 1)
+                else:
+                    role, lost, believed = acts.get(key, ["", 0, None])
+                    start = t - STUCK_WINDOW / SAMPLES_PER_S
+                    open_runs[key] = {"team": r.team, "player": r.player, "kind": kind, "role": role,
+                                      "time_s": round(start, 1), "length_s": round(t - start, 1),
+                                      "ball_lost_frames": lost, "truth": (round(h[-1][0]), round(h[-1][1])),
+                                      "believed": believed and (round(believed[0]), round(believed[1])),
+                                      "max_twist_rad": round(twist, 2)}
+                    episodes.append(open_runs[key])
+    return episodes
+
+
+def main() -> int:
+    """Lists the stuck episodes of the LCM logs named on the command line, longest first."""
+    import sys
+
+    import touchline_paths
+    sys.path[:0] = touchline_paths.lcm_python_dirs(touchline_paths.build_dir())
+    for log in sys.argv[1:]:
+        for e in sorted(stuck_episodes(Path(log)), key=lambda e: -e["length_s"]):
+            print(f"{log}: team {e['team']} #{e['player']} {e['role'] or '-'} {e['kind']} at {e['time_s']:.1f} s "
+                  f"for {e['length_s']:.1f} s, ball lost {e['ball_lost_frames']} frames, at {e['truth']} "
+                  f"believing {e['believed']}, feet twisted up to {e['max_twist_rad']} rad")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

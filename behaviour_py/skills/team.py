@@ -20,6 +20,7 @@ from .landmark_glance import LandmarkGlance
 from .search import Search
 from .striker import Striker
 from .supporter import Defender, Midfielder
+from .unstick import Unstick
 from .team_comm import (GOALIE_PLAYER, MESSAGE_EVERY_FRAMES, ROLE_DEFENDER, ROLE_GOALIE, ROLE_MIDFIELDER, ROLE_NONE,
                         ROLE_STRIKER, assignRole, encodeMessage, makeTeamInfo)
 
@@ -78,6 +79,7 @@ class Team:
         self.readyPose = GoToPose()
         self.head = LandmarkGlance()
         self.search = Search()
+        self.unstick = Unstick()
         self.frame = 0
 
     def tick(self, blackboard):
@@ -100,6 +102,9 @@ class Team:
 
     def body(self, blackboard):
         gc = blackboard.gameController
+        playing = gc.state == robot.GameState.PLAYING and not gc.penalised and not blackboard.motion.fallen
+        if not playing:
+            self.unstick.reset()  # stuck counts in play only
         if gc.penalised or blackboard.motion.fallen:
             return actioncommand.stand()
         if gc.state == robot.GameState.READY:
@@ -108,6 +113,12 @@ class Team:
             return self.readyPose.tick(blackboard).body
         if gc.state != robot.GameState.PLAYING:
             return actioncommand.stand()
+        # Every role's body goes through Unstick: turning on the spot for long, whatever the
+        # cause, becomes a walk without turning (issue #17); the goalie's towards its home.
+        home = (GOALIE_HOME_X, 0.0) if self.role == ROLE_GOALIE else None
+        return self.unstick.tick(blackboard, self.playBody(blackboard), home)
+
+    def playBody(self, blackboard):
         if self.role != ROLE_GOALIE:
             body = self.search.tick(blackboard, self.role)
             if body is not None:

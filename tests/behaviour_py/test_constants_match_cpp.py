@@ -9,7 +9,8 @@ import pytest
 
 import behaviour
 from skills import (avoid, ball, camera, field, go_to_pose, goalie, head_scan, landmark_glance, learned_go_to_pose,
-                    line_up_and_kick, robot_limits, search, striker, supporter, team, team_comm, tile_policy)
+                    line_up_and_kick, robot_limits, search, striker, supporter, team, team_comm, tile_policy,
+                    unstick)
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 CPP_SKILLS = ROOT / "behaviour_cpp" / "include" / "touchline" / "behaviour" / "skills"
@@ -45,7 +46,7 @@ def python_constants():
                "landmark_glance": landmark_glance,
                "line_up_and_kick": line_up_and_kick, "robot_limits": robot_limits, "field": field, "goalie": goalie,
                "search": search, "striker": striker, "supporter": supporter, "team": team, "team_comm": team_comm,
-               "learned_go_to_pose": learned_go_to_pose, "tile_policy": tile_policy}
+               "unstick": unstick, "learned_go_to_pose": learned_go_to_pose, "tile_policy": tile_policy}
     assert {path.stem for path in PY_SKILLS.glob("*.py")} - set(modules) <= {"__init__", "go_to_ball", "look_for_ball",
                                                                               "stand", "track_ball"}
     values = {}

@@ -27,6 +27,13 @@ def test_standing_in_the_field_or_walking_is_not():
     assert not match_stats.stuck(samples(0, 0, theta_step=0.05), EDGE_X, EDGE_Y)  # 5 rad: less than a full turn
 
 
+def test_the_episode_listing_names_how_a_robot_is_stuck():
+    assert match_stats.stuck_kind(samples(0, 0, theta_step=0.1), EDGE_X, EDGE_Y) == "spin"
+    assert match_stats.stuck_kind(samples(3600, 0), EDGE_X, EDGE_Y) == "wall"
+    assert match_stats.stuck_kind(samples(3600, 0, theta_step=0.1), EDGE_X, EDGE_Y) == "spin"  # spinning at a wall
+    assert match_stats.stuck_kind(samples(0, 0), EDGE_X, EDGE_Y) is None
+
+
 def path(step_mm, samples=match_stats.SAMPLES_PER_S + 1):
     return [(i * step_mm, 0.0) for i in range(samples)]
 

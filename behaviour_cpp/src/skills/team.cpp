@@ -52,6 +52,8 @@ int Team::chooseRole(const Blackboard& blackboard) const {
 
 ActionCommand::Body Team::body(const Blackboard& blackboard) {
   const GameControllerBlackboard& gc = blackboard.gameController;
+  const bool playing = gc.state == GameState::PLAYING && !gc.penalised && !blackboard.motion.fallen;
+  if (!playing) unstick_.reset(); // stuck counts in play only
   if (gc.penalised || blackboard.motion.fallen) return actioncommand::stand();
   if (gc.state == GameState::READY) {
     const FieldPoint ready = readyPosition(gc.playerNumber);
@@ -59,6 +61,14 @@ ActionCommand::Body Team::body(const Blackboard& blackboard) {
     return readyPose_.tick(blackboard).body;
   }
   if (gc.state != GameState::PLAYING) return actioncommand::stand();
+  // Every role's body goes through Unstick: turning on the spot for long, whatever the
+  // cause, becomes a walk without turning (issue #17); the goalie's towards its home.
+  const std::optional<FieldPoint> home =
+      role_ == ROLE_GOALIE ? std::optional<FieldPoint>(FieldPoint{GOALIE_HOME_X, 0.f}) : std::nullopt;
+  return unstick_.tick(blackboard, playBody(blackboard), home);
+}
+
+ActionCommand::Body Team::playBody(const Blackboard& blackboard) {
   if (role_ != ROLE_GOALIE) {
     if (const auto searchBody = search_.tick(blackboard, role_)) return *searchBody;
   }

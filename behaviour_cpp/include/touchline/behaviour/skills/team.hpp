@@ -18,6 +18,7 @@
 #include "touchline/behaviour/skills/goalie.hpp"
 #include "touchline/behaviour/skills/landmark_glance.hpp"
 #include "touchline/behaviour/skills/search.hpp"
+#include "touchline/behaviour/skills/unstick.hpp"
 #include "touchline/behaviour/skills/striker.hpp"
 #include "touchline/behaviour/skills/supporter.hpp"
 #include "touchline/behaviour/skills/team_comm.hpp"
@@ -54,6 +55,8 @@ class Team : public api::Behaviour {
  private:
   int chooseRole(const api::Blackboard& blackboard) const;
   api::ActionCommand::Body body(const api::Blackboard& blackboard);
+  /// The PLAYING body before Unstick: the search, else the role's skill.
+  api::ActionCommand::Body playBody(const api::Blackboard& blackboard);
 
   int fixedRole_;
   int role_;
@@ -64,6 +67,7 @@ class Team : public api::Behaviour {
   GoToPose readyPose_;
   LandmarkGlance head_;
   Search search_;
+  Unstick unstick_;
   int64_t frame_ = 0;
 };
 

@@ -1,0 +1,148 @@
+// Unstick (issue #17: no robot stuck more than 10 s): turning on the spot for long becomes a
+// walk without turning, towards the ball, the team ball, the field's centre or the goalie's
+// home; the same hand-worked cases as tests/behaviour_py/test_unstick.py.
+#include "touchline/behaviour/skills/unstick.hpp"
+
+#include <optional>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "boards.hpp"
+#include "touchline/behaviour/skills/actioncommand.hpp"
+#include "touchline/behaviour/skills/robot_limits.hpp"
+#include "touchline/behaviour/skills/team.hpp"
+#include "touchline/behaviour/skills/team_comm.hpp"
+
+using namespace touchline::api;
+using namespace touchline::behaviour::skills;
+using touchline::behaviour::test::teamBoard;
+
+namespace {
+
+using AT = ActionCommand::ActionType;
+constexpr int64_t FRAME_US = 33333;
+constexpr int STUCK_FRAME = 59; ///< at 0.06 rad a frame, the tick the odometry has turned over UNSTICK_TURN_RAD
+
+struct Spin {
+  AbsCoord pos{};
+  float turnPerFrame = 0.06f;  ///< rad the odometry turns every frame
+  float stepPerFrame = 0.f;    ///< mm the odometry steps forward (x) every frame ...
+  bool localised = true;       ///< ... which localisation sees along field x from pos (false: it stays at pos)
+  bool seen = true;            ///< the own ball (1000 mm ahead of the field origin) seen recently
+  int player = 2;
+  std::vector<TeamMessage> messages{};
+  float ballX = 1000.f, ballY = 0.f;
+};
+
+/// A Spin with `change` applied (C++17 has no designated initialisers).
+template <typename Change>
+Spin spinWith(Change change) {
+  Spin spin;
+  change(spin);
+  return spin;
+}
+
+/// Frame `frame` of a robot whose odometry turns and steps as `spin` says.
+Blackboard spinBoard(int frame, const Spin& spin, bool penalised = false) {
+  AbsCoord pos = spin.pos;
+  if (spin.localised) pos.x += spin.stepPerFrame * static_cast<float>(frame);
+  Blackboard board = teamBoard(pos, spin.ballX, spin.ballY, spin.seen, spin.seen ? 0 : 1000, GameState::PLAYING,
+                               spin.player, penalised, false, spin.messages, frame * FRAME_US);
+  board.motion.odometry = {spin.stepPerFrame * static_cast<float>(frame), 0.f,
+                           spin.turnPerFrame * static_cast<float>(frame)};
+  return board;
+}
+
+/// The bodies Unstick returns for `frames` frames of turning requests (1.5 rad/s).
+std::vector<ActionCommand::Body> run(Unstick& unstick, int frames, const Spin& spin,
+                                     std::optional<FieldPoint> target = std::nullopt) {
+  const ActionCommand::Body turning = touchline::behaviour::actioncommand::walk(0.f, 0.f, 1.5f);
+  std::vector<ActionCommand::Body> bodies;
+  for (int frame = 0; frame < frames; ++frame) bodies.push_back(unstick.tick(spinBoard(frame, spin), turning, target));
+  return bodies;
+}
+
+} // namespace
+
+TEST(Unstick, TurningOnTheSpotForTheWindowBecomesAWalkToTheBallWithoutTurning) {
+  Unstick unstick;
+  const auto bodies = run(unstick, STUCK_FRAME + UNSTICK_RECOVER_FRAMES + 1, Spin{});
+  for (int i = 0; i < STUCK_FRAME; ++i) EXPECT_FLOAT_EQ(bodies[i].turn, 1.5f) << i;
+  for (int i = STUCK_FRAME; i < STUCK_FRAME + UNSTICK_RECOVER_FRAMES; ++i) {
+    EXPECT_EQ(bodies[i].actionType, AT::WALK) << i; // the ball 1000 mm ahead: straight at it, at full speed
+    EXPECT_NEAR(bodies[i].forward, MAX_FORWARD, 1e-3f) << i;
+    EXPECT_NEAR(bodies[i].left, 0.f, 1e-3f) << i;
+    EXPECT_EQ(bodies[i].turn, 0.f) << i;
+  }
+  EXPECT_FLOAT_EQ(bodies.back().turn, 1.5f); // recovered: the request again, the window afresh
+}
+
+TEST(Unstick, TheWindowAndLimitTheCasesRelyOn) {
+  EXPECT_LT(0.06f * (STUCK_FRAME - 1), UNSTICK_TURN_RAD);
+  EXPECT_GT(0.06f * STUCK_FRAME, UNSTICK_TURN_RAD);
+  EXPECT_LT(0.012f * (UNSTICK_WINDOW_FRAMES - 1), UNSTICK_TURN_RAD);
+}
+
+TEST(Unstick, WalkingOrTurningSlowlyIsNotStuck) {
+  Unstick walking, slow;
+  for (const auto& b : run(walking, 400, spinWith([](Spin& s) { s.stepPerFrame = 4.f; })))
+    EXPECT_FLOAT_EQ(b.turn, 1.5f); // 236 mm in 59 frames
+  for (const auto& b : run(slow, 400, spinWith([](Spin& s) { s.turnPerFrame = 0.012f; })))
+    EXPECT_FLOAT_EQ(b.turn, 1.5f); // 2.9 rad in 8 s
+}
+
+TEST(Unstick, AWalkThatStepsOnInOdometryOnlyIsStuck) {
+  Unstick unstick;
+  const auto bodies = run(unstick, STUCK_FRAME + 1, spinWith([](Spin& s) {
+                            s.stepPerFrame = 4.f;
+                            s.localised = false;
+                          }));
+  EXPECT_FLOAT_EQ(bodies[STUCK_FRAME - 1].turn, 1.5f);
+  EXPECT_EQ(bodies[STUCK_FRAME].turn, 0.f);
+}
+
+TEST(Unstick, WithoutTheOwnBallItWalksToTheTeamBallElseTheCentreAndTheGoalieHome) {
+  Unstick centre, team, goalie;
+  // No ball known: back to the centre, 500 mm behind.
+  const Spin behind = spinWith([](Spin& s) {
+    s.pos = {500.f, 0.f, 0.f};
+    s.seen = false;
+  });
+  EXPECT_NEAR(run(centre, STUCK_FRAME + 1, behind).back().forward, -MAX_BACKWARD, 1e-3f);
+  const TeamInfo info{3, ROLE_DEFENDER, true, false, false, 500, 0, 400};
+  const Spin teamBall = spinWith([&](Spin& s) {
+    s.seen = false;
+    s.messages = {{3, STUCK_FRAME * FRAME_US, encodeMessage(info)}};
+  });
+  const ActionCommand::Body toTeamBall = run(team, STUCK_FRAME + 1, teamBall).back(); // 400 mm to the left
+  EXPECT_NEAR(toTeamBall.forward, 0.f, 1e-3f);
+  EXPECT_NEAR(toTeamBall.left, 200.f, 1e-3f);
+  EXPECT_EQ(toTeamBall.turn, 0.f);
+  const ActionCommand::Body home =
+      run(goalie, STUCK_FRAME + 1, spinWith([](Spin& s) {
+            s.pos = {-2000.f, 0.f, 0.f};
+            s.player = 1;
+          }),
+          FieldPoint{-2700.f, 0.f})
+          .back();
+  EXPECT_NEAR(home.forward, -MAX_BACKWARD, 1e-3f);
+  EXPECT_NEAR(home.left, 0.f, 1e-3f);
+  EXPECT_EQ(home.turn, 0.f);
+}
+
+TEST(Unstick, TheTeamUnsticksInPlayOnlyAndStartsAfreshAfterAPenalty) {
+  Team team(ROLE_STRIKER);
+  const Spin left = spinWith([](Spin& s) { // the ball to the left: the striker turns to it
+    s.ballX = 0.f;
+    s.ballY = 1000.f;
+  });
+  const int frames = STUCK_FRAME - 1;
+  for (int frame = 0; frame < frames; ++frame) team.tick(spinBoard(frame, left));
+  team.tick(spinBoard(frames, left, true));
+  for (int frame = frames + 1; frame < frames + 1 + STUCK_FRAME; ++frame) // the window starts again
+    EXPECT_GT(team.tick(spinBoard(frame, left)).body.turn, 0.f) << frame;
+  const ActionCommand::Body body = team.tick(spinBoard(frames + 1 + STUCK_FRAME, left)).body;
+  EXPECT_EQ(body.turn, 0.f); // stuck in play: sideways to the ball
+  EXPECT_NEAR(body.left, 200.f, 1e-3f);
+}
