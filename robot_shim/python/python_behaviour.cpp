@@ -138,6 +138,8 @@ PythonBehaviour::Files PythonBehaviour::scan_python_files(const std::filesystem:
 struct __attribute__((visibility("hidden"))) PythonBehaviour::Python {
   py::module_ sys, robot, traceback, importlib;
   py::dict params;         ///< robot.params while this behaviour runs
+  py::object team, player; ///< robot.team and robot.player while this behaviour runs
+  py::str directory;       ///< the directory, first on sys.path while this behaviour runs
   py::dict stashed;        ///< this behaviour's modules while another PythonBehaviour runs
   /// While it runs: the names it brought back, and every name in sys.modules as it did.
   /// Its modules are among those and the names added since, so stash() need not look at
@@ -157,7 +159,8 @@ struct __attribute__((visibility("hidden"))) PythonBehaviour::Python {
   /// After the interpreter has gone, handles must be dropped without touching it.
   void abandon() {
     for (py::object* o : std::initializer_list<py::object*>{&sys, &robot, &traceback, &importlib, &params,
-                                                            &stashed, &restored, &names_before, &module, &tick})
+                                                            &stashed, &restored, &names_before, &module, &tick,
+                                                            &team, &player, &directory})
       o->release();
   }
 };
@@ -185,6 +188,9 @@ PythonBehaviour::PythonBehaviour(PythonBehaviourDef def) : def_(std::move(def)) 
     // the same second (of the same size) would load the stale bytecode on reload.
     py_->sys.attr("dont_write_bytecode") = true;
     for (const auto& [key, value] : def_.params) py_->params[py::str(key)] = py::str(value);
+    py_->team = py::int_(def_.team);
+    py_->player = py::int_(def_.player);
+    py_->directory = py::str(def_.directory.string());
     activate();
     // The module must come from the directory, not from anywhere else on sys.path.
     if (!module_present() && def_.profile->module_required())
@@ -241,21 +247,21 @@ void PythonBehaviour::activate() {
     g_names_without_robots.version = version_before;
   }
   py_->names_before = g_names_without_robots.names;
-  bool kept = PyDict_GetItemString(modules.ptr(), "robot") != nullptr;
-  for (auto [name, module] : py_->stashed) {
-    if (kept && PyDict_Contains(modules.ptr(), name.ptr()) != 0) kept = false;
-    modules[name] = module;
-  }
-  py_->names_before_kept = kept;
+  // Whether none of its names were there and "robot" was: sizes tell, without a lookup each.
+  const Py_ssize_t size_before = PyDict_GET_SIZE(modules.ptr());
+  for (auto [name, module] : py_->stashed) modules[name] = module;
+  const Py_ssize_t size_restored = PyDict_GET_SIZE(modules.ptr());
   modules["robot"] = py_->robot; // this behaviour's framework's `robot`
+  py_->names_before_kept = size_restored - size_before == PyDict_GET_SIZE(py_->stashed.ptr()) &&
+                           PyDict_GET_SIZE(modules.ptr()) == size_restored;
   py_->restored = std::move(py_->stashed);
   py_->stashed = py::dict();
   py_->robot.attr("params") = py_->params;
-  py_->robot.attr("team") = def_.team;
-  py_->robot.attr("player") = def_.player;
+  py_->robot.attr("team") = py_->team;
+  py_->robot.attr("player") = py_->player;
   // First on sys.path, so that a reload finds this directory's modules before others'.
   py::list path = py_->sys.attr("path");
-  const py::str dir(def_.directory.string());
+  const py::str& dir = py_->directory;
   // Most often it is first and nowhere else already (robots of one directory in turn).
   PyObject* first = PyList_GET_SIZE(path.ptr()) > 0 ? PyList_GET_ITEM(path.ptr(), 0) : nullptr;
   const bool placed = first && PyUnicode_Check(first) && PyUnicode_Compare(first, dir.ptr()) == 0 &&
