@@ -10,6 +10,8 @@ roles assigned from the team messages (team_comm.assignRole) unless fixed. A fie
 that has not seen the ball for SEARCH_TURN_FRAMES searches (search.py: the team ball, else a
 short turn on the spot and a walk to a search spot, in cycles).
 """
+import math
+
 import actioncommand
 import robot
 
@@ -21,8 +23,8 @@ from .search import Search
 from .striker import Striker
 from .supporter import Defender, Midfielder
 from .unstick import Unstick
-from .team_comm import (GOALIE_PLAYER, MESSAGE_EVERY_FRAMES, ROLE_DEFENDER, ROLE_GOALIE, ROLE_MIDFIELDER, ROLE_NONE,
-                        ROLE_STRIKER, assignRole, encodeMessage, makeTeamInfo)
+from .team_comm import (GOALIE_PLAYER, MESSAGE_EVERY_FRAMES, NO_BALL_DISTANCE, ROLE_DEFENDER, ROLE_GOALIE,
+                        ROLE_MIDFIELDER, ROLE_NONE, ROLE_STRIKER, assignRole, encodeMessage, makeTeamInfo, roundMm)
 
 TEAM_BALL_SEEN_CHEST = 0x00ff00  # green: the ball was seen recently
 TEAM_BALL_LOST_CHEST = 0xff0000  # red: searching
@@ -68,6 +70,21 @@ def messageInfo(blackboard, role):
                         blackboard.localisation.ballPosRR.distance, ball.x, ball.y, pos.x, pos.y)
 
 
+def messageBallDistance(blackboard):
+    """messageInfo(blackboard, role).ballDistance without the rest of the message (the role
+    needs only this, every tick). Where messageInfo would raise (a position that is not
+    finite: math.floor) it is called, and raises the same."""
+    localisation = blackboard.localisation
+    ball = localisation.ballPos
+    pos = localisation.robotPos
+    isfinite = math.isfinite
+    if not (isfinite(ball.x) and isfinite(ball.y) and isfinite(pos.x) and isfinite(pos.y)):
+        return messageInfo(blackboard, ROLE_NONE).ballDistance
+    if ballRecentlySeen(blackboard):
+        return roundMm(localisation.ballPosRR.distance, 0, NO_BALL_DISTANCE - 1)
+    return NO_BALL_DISTANCE
+
+
 class Team:
     def __init__(self, fixedRole=ROLE_NONE, policy=None):
         """fixedRole: play this role always (ROLE_NONE: assign roles from the messages);
@@ -96,9 +113,8 @@ class Team:
     def chooseRole(self, blackboard):
         if self.fixedRole != ROLE_NONE:
             return self.fixedRole
-        info = messageInfo(blackboard, self.role)
-        return assignRole(info.playerNumber, info.ballDistance, self.role, blackboard.receiver.messages,
-                          blackboard.utime)
+        return assignRole(blackboard.gameController.playerNumber, messageBallDistance(blackboard), self.role,
+                          blackboard.receiver.messages, blackboard.utime)
 
     def body(self, blackboard):
         gc = blackboard.gameController
