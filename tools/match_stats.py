@@ -69,12 +69,8 @@ def analyse_log(log: Path) -> dict:
         nearest = None
         for r in truth.robots:
             counts = playing and r.active and not r.penalised and not r.fallen
-            h = history[(r.team, r.player)]
-            h.append((r.body.x_mm, r.body.y_mm, r.body.theta_rad, counts))
-            if counts and len(h) > STUCK_WINDOW and all(c for *_, c in h[-STUCK_WINDOW:]) and stuck(h, edge_x, edge_y):
+            if add_sample(history[(r.team, r.player)], r, counts, edge_x, edge_y) is not None:
                 stuck_frames[r.team] += 1
-            if len(h) > STUCK_WINDOW + 1:
-                del h[0]
             d = math.hypot(r.body.x_mm - truth.ball_x_mm, r.body.y_mm - truth.ball_y_mm)
             if counts and d < POSSESSION_MM and (nearest is None or d < nearest[0]):
                 nearest = (d, r.team)
@@ -84,6 +80,18 @@ def analyse_log(log: Path) -> dict:
             "stuck_s": [stuck_frames[0] / SAMPLES_PER_S, stuck_frames[1] / SAMPLES_PER_S],
             "ball_moving_share": moving_samples / samples if samples else 0.0,
             "playing_share": playing_samples / samples if samples else 0.0}
+
+
+def add_sample(h: list, r, counts: bool, edge_x: float, edge_y: float) -> str | None:
+    """Appends robot truth `r`'s sample to its history `h` (the last STUCK_WINDOW + 1 kept)
+    and says how it is stuck ("spin", "wall", None): only a robot that counted (in play, on
+    the field, standing) for the whole window can be."""
+    h.append((r.body.x_mm, r.body.y_mm, r.body.theta_rad, counts))
+    kind = (stuck_kind(h, edge_x, edge_y) if counts and len(h) > STUCK_WINDOW
+            and all(c for *_, c in h[-STUCK_WINDOW:]) else None)
+    if len(h) > STUCK_WINDOW + 1:
+        del h[0]
+    return kind
 
 
 def ball_moving(path: list) -> bool:
@@ -161,11 +169,7 @@ def stuck_episodes(log: Path) -> list[dict]:
                 key = (r.team, r.player)
                 counts = playing and r.active and not r.penalised and not r.fallen
                 h = history[key]
-                h.append((r.body.x_mm, r.body.y_mm, r.body.theta_rad, counts))
-                kind = (stuck_kind(h, edge_x, edge_y) if counts and len(h) > STUCK_WINDOW
-                        and all(c for *_, c in h[-STUCK_WINDOW:]) else None)
-                if len(h) > STUCK_WINDOW + 1:
-                    del h[0]
+                kind = add_sample(h, r, counts, edge_x, edge_y)
                 run = open_runs.get(key)
                 twist = abs(math.remainder(r.left_foot.theta_rad - r.right_foot.theta_rad, 2 * math.pi))
                 if run:
