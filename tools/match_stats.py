@@ -188,17 +188,32 @@ def stuck_episodes(log: Path) -> list[dict]:
                                       "believed": believed and (round(believed[0]), round(believed[1])),
                                       "max_twist_rad": round(twist, 2)}
                     episodes.append(open_runs[key])
+    if t0 is None:
+        raise ValueError("holds no TL_TRUTH: not a match log")
     return episodes
 
 
-def main() -> int:
-    """Lists the stuck episodes of the LCM logs named on the command line, longest first."""
+def main(argv: list[str] | None = None) -> int:
+    """Lists the stuck episodes of the LCM logs named on the command line, longest first; a
+    log that cannot be read is one line and exit status 1."""
+    import argparse
     import sys
 
     import touchline_paths
-    sys.path[:0] = touchline_paths.lcm_python_dirs(touchline_paths.build_dir())
-    for log in sys.argv[1:]:
-        for e in sorted(stuck_episodes(Path(log)), key=lambda e: -e["length_s"]):
+    from touchline_version import add_version_option
+    parser = argparse.ArgumentParser(description="Lists every stuck episode of match logs, longest first.")
+    add_version_option(parser, "tools/match_stats.py")
+    parser.add_argument("logs", nargs="+", type=Path)
+    parser.add_argument("--build-dir", type=Path, default=touchline_paths.build_dir())
+    args = parser.parse_args(argv)
+    sys.path[:0] = touchline_paths.lcm_python_dirs(args.build_dir)
+    for log in args.logs:
+        try:
+            episodes = stuck_episodes(log)
+        except (OSError, ValueError) as e:
+            print(f"match_stats: {log}: {getattr(e, 'strerror', None) or e}", file=sys.stderr)
+            return 1
+        for e in sorted(episodes, key=lambda e: -e["length_s"]):
             print(f"{log}: team {e['team']} #{e['player']} {e['role'] or '-'} {e['kind']} at {e['time_s']:.1f} s "
                   f"for {e['length_s']:.1f} s, ball lost {e['ball_lost_frames']} frames, at {e['truth']} "
                   f"believing {e['believed']}, feet twisted up to {e['max_twist_rad']} rad")

@@ -109,6 +109,8 @@ def analyse(log: Path) -> list[dict]:
                 call[f"pusher_towards_{w}"] = towards(hp, (v.body.x_mm, v.body.y_mm), w) if hp else None
                 call[f"victim_towards_{w}"] = towards(hv, (p.body.x_mm, p.body.y_mm), w) if hv else None
             calls.append(call)
+    if current is None:
+        raise ValueError("holds no TL_TRUTH: not a match log")
     return calls
 
 
@@ -157,7 +159,13 @@ def main() -> int:
     for types in touchline_paths.lcm_python_dirs(args.build_dir):
         if types not in sys.path:
             sys.path.insert(0, types)
-    calls = [c for log in args.logs for c in analyse(log)]
+    calls = []
+    for log in args.logs:
+        try:
+            calls += analyse(log)
+        except (OSError, ValueError) as e:  # no such file, not an LCM log, no TL_MATCH
+            print(f"pushing_calls: {log}: {getattr(e, 'strerror', None) or e}", file=sys.stderr)
+            return 1
     if args.calls:
         args.calls.write_text("".join(json.dumps(c) + "\n" for c in calls))
     summarise(calls)

@@ -48,3 +48,12 @@ def test_a_wedged_or_new_ball_is_not_moving():
     assert not match_stats.ball_moving(path(100, samples=match_stats.SAMPLES_PER_S))  # under a second seen
     jitter = [(40.0 * (i % 2), 0.0) for i in range(match_stats.SAMPLES_PER_S + 1)]
     assert not match_stats.ball_moving(jitter)  # back and forth between two feet goes nowhere
+
+
+def test_a_missing_or_foreign_log_is_one_line_and_a_failure(tmp_path, capsys):
+    foreign = tmp_path / "notes.txt"
+    foreign.write_text("not an LCM log\n")
+    for log, reason in ((tmp_path / "none.lcmlog", "No such file"), (foreign, "not a match log")):
+        assert match_stats.main([str(log)]) == 1
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and err.startswith(f"match_stats: {log}: ") and reason in err, err

@@ -35,3 +35,14 @@ def test_passing_square_is_not_walking_at_it():
 def test_a_short_history_or_a_placement_in_the_window_says_nothing():
     assert pushing_calls.towards(walk(150, frames=5), (500.0, 0.0), 0.5) is None
     assert pushing_calls.towards(walk(150, jump_at=25), (2000.0, 0.0), 0.5) is None
+
+
+def test_a_missing_or_foreign_log_is_one_line_and_a_failure(tmp_path):
+    import subprocess
+    foreign = tmp_path / "notes.txt"
+    foreign.write_text("not an LCM log\n")
+    script = Path(__file__).resolve().parents[2] / "tools" / "pushing_calls.py"
+    for log, reason in ((tmp_path / "none.lcmlog", "No such file"), (foreign, "not a match log")):
+        done = subprocess.run([sys.executable, str(script), str(log)], capture_output=True, text=True)
+        assert done.returncode == 1 and done.stderr.count("\n") == 1, done.stderr
+        assert done.stderr.startswith(f"pushing_calls: {log}: ") and reason in done.stderr

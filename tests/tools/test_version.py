@@ -23,6 +23,7 @@ PROGRAMS = [
     ("tools/sweep", [PY, str(ROOT / "tools" / "sweep.py")]),
     ("tools/evaluate_teams.py", [PY, str(ROOT / "tools" / "evaluate_teams.py")]),
     ("tools/pushing_calls.py", [PY, str(ROOT / "tools" / "pushing_calls.py")]),
+    ("tools/match_stats.py", [PY, str(ROOT / "tools" / "match_stats.py")]),
     ("tools/record_corpus.py", [PY, str(ROOT / "tools" / "record_corpus.py")]),
     ("tools/synthetic_policy.py", [PY, str(ROOT / "tools" / "synthetic_policy.py")]),
     ("touchline_viewer", [PY, "-m", "touchline_viewer"]),
