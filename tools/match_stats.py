@@ -103,11 +103,6 @@ def ball_moving(path: list) -> bool:
     return math.hypot(x1 - x0, y1 - y0) >= BALL_MOVING_MM
 
 
-def stuck(h: list, edge_x: float, edge_y: float) -> bool:
-    """Whether the robot whose samples end `h` is stuck over the last STUCK_WINDOW samples."""
-    return stuck_kind(h, edge_x, edge_y) is not None
-
-
 def stuck_kind(h: list, edge_x: float, edge_y: float) -> str | None:
     """How the robot whose samples end `h` is stuck over the last STUCK_WINDOW samples:
     "spin", "wall", or None when it is not."""

@@ -14,17 +14,17 @@ def samples(x, y, theta_step=0.0, dx=0.0):
 
 
 def test_spinning_on_the_spot_is_stuck():
-    assert match_stats.stuck(samples(0, 0, theta_step=0.1), EDGE_X, EDGE_Y)  # 10 rad in 10 s
+    assert match_stats.stuck_kind(samples(0, 0, theta_step=0.1), EDGE_X, EDGE_Y) == "spin"  # 10 rad in 10 s
 
 
 def test_standing_against_the_wall_is_stuck():
-    assert match_stats.stuck(samples(3600, 0), EDGE_X, EDGE_Y)
+    assert match_stats.stuck_kind(samples(3600, 0), EDGE_X, EDGE_Y) == "wall"
 
 
 def test_standing_in_the_field_or_walking_is_not():
-    assert not match_stats.stuck(samples(0, 0), EDGE_X, EDGE_Y)
-    assert not match_stats.stuck(samples(3400, 0, dx=-2), EDGE_X, EDGE_Y)  # walks away from the wall
-    assert not match_stats.stuck(samples(0, 0, theta_step=0.05), EDGE_X, EDGE_Y)  # 5 rad: less than a full turn
+    assert match_stats.stuck_kind(samples(0, 0), EDGE_X, EDGE_Y) is None
+    assert match_stats.stuck_kind(samples(3400, 0, dx=-2), EDGE_X, EDGE_Y) is None  # walks away from the wall
+    assert match_stats.stuck_kind(samples(0, 0, theta_step=0.05), EDGE_X, EDGE_Y) is None  # 5 rad: less than a full turn
 
 
 def test_the_episode_listing_names_how_a_robot_is_stuck():
