@@ -2,7 +2,9 @@
 
 robot.params (strings, set by the shim) picks the body skill with "skill" (default
 GoToBall) and gives its parameters ("Team" plays a match: roles from team messages;
-"Goalie", "Striker", "Midfielder", "Defender" play that one role in a match; "walker=learned"
+"Goalie", "Striker", "Midfielder", "Defender" play that one role in a match; these take
+"supporters=tuned" (the default) or "supporters=thesis", the numbers the midfielder and defender
+play, skills/supporter.py's SupporterDef; "walker=learned"
 makes the skills that walk to the ball use the learned policy "policy", data-relative,
 default policies/go_to_pose.policy); the head runs LookForBall (TrackBall while the ball was
 seen recently, else HeadScan); the chest LED says whether the ball is seen. The C++ port is
@@ -22,7 +24,8 @@ from skills.line_up_and_kick import DRIBBLE_POWER, KICK_POWER, LineUpAndKick
 from skills.look_for_ball import LookForBall
 from skills.stand import Stand
 from skills.team import Team
-from skills.team_comm import ROLE_DEFENDER, ROLE_GOALIE, ROLE_MIDFIELDER, ROLE_STRIKER
+from skills.supporter import SUPPORTER_DEFS
+from skills.team_comm import ROLE_DEFENDER, ROLE_GOALIE, ROLE_MIDFIELDER, ROLE_NONE, ROLE_STRIKER
 from skills.tile_policy import DEFAULT_POLICY
 from skills.track_ball import TrackBall
 
@@ -81,6 +84,15 @@ class ParamReader:
         self.known.add(key)
         return self.params.get(key, fallback)
 
+    def supporters(self):
+        """The SupporterDef the team's midfielder and defender play: supporters=tuned (the
+        default) or thesis (Algorithms 4.1 and 4.2 with the thesis's numbers)."""
+        name = self.text("supporters", next(iter(SUPPORTER_DEFS)))
+        if name not in SUPPORTER_DEFS:
+            raise BehaviourError("%s: parameter supporters must be %s (got '%s')"
+                                 % (self.skill, " or ".join(SUPPORTER_DEFS), name))
+        return SUPPORTER_DEFS[name]
+
     def walker(self):
         """The policy file the learned walker uses (walker=learned; policy=..., data-relative),
         or None for GoToPose (walker=hand, the default)."""
@@ -136,11 +148,11 @@ SKILLS = {
     "LineUpAndKick": (makeLineUpAndKick, LookForBall),
     "TrackBall": (lambda p: Stand(), TrackBall),
     "HeadScan": (lambda p: Stand(), HeadScan),
-    "Team": (lambda p: Team(policy=p.walker()), None),
-    "Goalie": (lambda p: Team(ROLE_GOALIE, p.walker()), None),
-    "Striker": (lambda p: Team(ROLE_STRIKER, p.walker()), None),
-    "Midfielder": (lambda p: Team(ROLE_MIDFIELDER, p.walker()), None),
-    "Defender": (lambda p: Team(ROLE_DEFENDER, p.walker()), None),
+    "Team": (lambda p: Team(ROLE_NONE, p.walker(), p.supporters()), None),
+    "Goalie": (lambda p: Team(ROLE_GOALIE, p.walker(), p.supporters()), None),
+    "Striker": (lambda p: Team(ROLE_STRIKER, p.walker(), p.supporters()), None),
+    "Midfielder": (lambda p: Team(ROLE_MIDFIELDER, p.walker(), p.supporters()), None),
+    "Defender": (lambda p: Team(ROLE_DEFENDER, p.walker(), p.supporters()), None),
 }
 
 

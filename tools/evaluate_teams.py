@@ -6,6 +6,11 @@ of two grid cells played side by side on every core:
   supporters_cpp: the same in C++ (cpp:Team against cpp:Striker): the same decisions (the port
                   corpus), several times faster, so it affords more matches
   ports:          the Python team (py:Team) against its C++ port (cpp:Team)
+  roles:          the supporters' tuned numbers (py:Team, supporters=tuned, the default) against
+                  the thesis's own Algorithms 4.1 and 4.2 (py:Team,supporters=thesis)
+  roles_cpp:      the same in C++
+  supporters_thesis_cpp: the thesis's supporters (cpp:Team,supporters=thesis) against four
+                  strikers (cpp:Striker), beside supporters_cpp
 
 For each match: goals for and against, penalties by kind, ball possession share, and the
 seconds robots spent stuck (spinning on the spot, or pressed against the boundary, for
@@ -28,15 +33,19 @@ import touchline_paths
 from touchline_version import add_version_option
 
 EXPERIMENTS = {"supporters": ("py:Team", "py:Striker"), "supporters_cpp": ("cpp:Team", "cpp:Striker"),
-               "ports": ("py:Team", "cpp:Team")}
+               "ports": ("py:Team", "cpp:Team"), "roles": ("py:Team", "py:Team,supporters=thesis"),
+               "roles_cpp": ("cpp:Team", "cpp:Team,supporters=thesis"),
+               "supporters_thesis_cpp": ("cpp:Team,supporters=thesis", "cpp:Striker")}
 
 
-def matches_of(experiments: list[str], matches: int, sets: list[str], launch: list[str]) -> list[dict]:
-    """The sweep's matches: each experiment a grid cell (cell i is experiments[i])."""
+def matches_of(experiments: list[str], matches: int, sets: list[str], launch: list[str],
+               first_seed: int = 1) -> list[dict]:
+    """The sweep's matches: each experiment a grid cell (cell i is experiments[i]), seeds
+    first_seed .. first_seed + matches - 1."""
     found = []
     for cell, name in enumerate(experiments):
         team0, team1 = EXPERIMENTS[name]
-        for match in sweep_grid.expand([team0], [team1], {}, [], list(range(1, matches + 1)),
+        for match in sweep_grid.expand([team0], [team1], {}, [], list(range(first_seed, first_seed + matches)),
                                        [*(a for s in sets for a in ("--set", s)), *launch]):
             found.append({**match, "cell": cell})
     return found
@@ -86,6 +95,9 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     add_version_option(parser, "tools/evaluate_teams.py")
     parser.add_argument("--matches", type=int, default=20)
+    parser.add_argument("--first-seed", type=int, default=1,
+                        help="the first match's seed (default 1): another range checks a result on matches it was "
+                             "not tuned on")
     parser.add_argument("--experiments", nargs="+", choices=sorted(EXPERIMENTS), default=["ports", "supporters"])
     parser.add_argument("--build-dir", type=Path, default=touchline_paths.build_dir())
     parser.add_argument("--set", action="append", default=[], help="world config override for every match")
@@ -95,9 +107,9 @@ def main() -> int:
                         help="the sweep's table, summary and plot (default out/evaluate_teams)")
     parser.add_argument("launch", nargs="*", help="after --: launcher options for every match (e.g. --in-process)")
     args = parser.parse_args()
-    if args.matches < 1 or args.workers < 1:
-        parser.error("--matches and --workers must be at least 1")
-    matches = matches_of(args.experiments, args.matches, args.set, args.launch)
+    if args.matches < 1 or args.workers < 1 or args.first_seed < 1:
+        parser.error("--matches, --workers and --first-seed must be at least 1")
+    matches = matches_of(args.experiments, args.matches, args.set, args.launch, args.first_seed)
     try:
         sweep.check_launcher_options(matches)
         rows = sweep.sweep(matches, args.workers, args.build_dir, args.sweep_out, progress=sys.stderr.isatty())

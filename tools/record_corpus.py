@@ -49,6 +49,7 @@ SCENARIOS = [
     ({"skill": "Goalie"}, (-2200, 300), 16, THREE, QUICK_KICKOFF),
     ({"skill": "Midfielder"}, (1600, -700), 16, THREE, QUICK_KICKOFF),
     ({"skill": "Defender"}, (-1000, 500), 16, THREE, QUICK_KICKOFF),
+    ({"skill": "Defender", "supporters": "thesis"}, (-1000, 500), 16, THREE, QUICK_KICKOFF),
     ({"skill": "LearnedGoToPose", "x": "-1500", "y": "300", "theta": "0.7"}, (0, 0), 10, THREE, []),
     ({"skill": "GoToBall", "walker": "learned"}, (-1200, 900), 12, THREE, []),
     ({"skill": "Striker", "walker": "learned"}, (800, 400), 16, THREE, QUICK_KICKOFF),

@@ -81,6 +81,17 @@ class ParamReader {
     return policy.value_or(skills::DEFAULT_POLICY);
   }
 
+  /// The SupporterDef the team's midfielder and defender play: supporters=tuned (the default)
+  /// or thesis (Algorithms 4.1 and 4.2 with the thesis's numbers), as behaviour.py's.
+  const skills::SupporterDef& supporters() {
+    const std::vector<std::string>& names = skills::supporterDefNames();
+    const std::string name = text("supporters").value_or(names.front());
+    if (const skills::SupporterDef* found = skills::supporterDef(name)) return *found;
+    std::string choices;
+    for (const std::string& known : names) choices += (choices.empty() ? "" : " or ") + known;
+    throw BehaviourError(behaviour_ + ": parameter supporters must be " + choices + " (got '" + name + "')");
+  }
+
   void reject_unknown() const {
     for (const auto& [key, value] : params_)
       if (!known_.count(key)) throw BehaviourError(behaviour_ + ": unknown parameter '" + key + "'");
@@ -98,6 +109,12 @@ std::unique_ptr<api::Behaviour> with_head(std::unique_ptr<api::Behaviour> body) 
   return std::make_unique<skills::SkillBehaviour>(std::move(body), std::make_unique<Head>());
 }
 
+/// The team behaviour playing `role` (ROLE_NONE: roles from team messages), with its parameters.
+std::unique_ptr<api::Behaviour> team(int role, ParamReader& p) {
+  const std::optional<std::string> policy = p.walker();
+  return std::make_unique<skills::Team>(role, policy, p.supporters());
+}
+
 struct Entry {
   const char* name;
   std::string help;
@@ -108,6 +125,9 @@ const std::vector<Entry>& entries() {
   static const std::string walkerHelp =
       "walker (hand: GoToPose walks to the ball; learned: the learned policy does), policy (with walker=learned: its "
       "file in the data directory, default policies/go_to_pose.policy)";
+  static const std::string teamHelp =
+      walkerHelp + ", supporters (tuned: the midfielder's and defender's tuned numbers, the default; thesis: "
+                   "Algorithms 4.1 and 4.2 as the thesis wrote them)";
   static const std::vector<Entry> all = {
       {"stand", "stands still", [](ParamReader&) { return std::make_unique<skills::Stand>(); }},
       {"walk", "walks at a constant velocity: forward (mm/s), left (mm/s), turn (rad/s)",
@@ -160,16 +180,16 @@ const std::vector<Entry>& entries() {
        [](ParamReader&) { return with_head<skills::HeadScan>(std::make_unique<skills::Stand>()); }},
       // The team and its roles: whole behaviours (head, LEDs, team messages, game states).
       // walker=learned: the striker walks to the ball with the learned policy.
-      {"Team", std::string("plays a match: roles (goalie, striker, defender, midfielder) from team messages; ") + walkerHelp,
-       [](ParamReader& p) { return std::make_unique<skills::Team>(skills::ROLE_NONE, p.walker()); }},
-      {"Goalie", std::string("plays a match as goalie; ") + walkerHelp,
-       [](ParamReader& p) { return std::make_unique<skills::Team>(skills::ROLE_GOALIE, p.walker()); }},
-      {"Striker", std::string("plays a match as striker; ") + walkerHelp,
-       [](ParamReader& p) { return std::make_unique<skills::Team>(skills::ROLE_STRIKER, p.walker()); }},
-      {"Midfielder", std::string("plays a match as midfielder (thesis Algorithm 4.1); ") + walkerHelp,
-       [](ParamReader& p) { return std::make_unique<skills::Team>(skills::ROLE_MIDFIELDER, p.walker()); }},
-      {"Defender", std::string("plays a match as defender (thesis Algorithm 4.2); ") + walkerHelp,
-       [](ParamReader& p) { return std::make_unique<skills::Team>(skills::ROLE_DEFENDER, p.walker()); }},
+      {"Team", std::string("plays a match: roles (goalie, striker, defender, midfielder) from team messages; ") + teamHelp,
+       [](ParamReader& p) { return team(skills::ROLE_NONE, p); }},
+      {"Goalie", std::string("plays a match as goalie; ") + teamHelp,
+       [](ParamReader& p) { return team(skills::ROLE_GOALIE, p); }},
+      {"Striker", std::string("plays a match as striker; ") + teamHelp,
+       [](ParamReader& p) { return team(skills::ROLE_STRIKER, p); }},
+      {"Midfielder", std::string("plays a match as midfielder (thesis Algorithm 4.1); ") + teamHelp,
+       [](ParamReader& p) { return team(skills::ROLE_MIDFIELDER, p); }},
+      {"Defender", std::string("plays a match as defender (thesis Algorithm 4.2); ") + teamHelp,
+       [](ParamReader& p) { return team(skills::ROLE_DEFENDER, p); }},
   };
   return all;
 }

@@ -23,7 +23,7 @@ from .ball import BEHIND_BALL_DIST, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, pointBehin
 from .field import distance
 from .goalie import GOALIE_HOME_X
 from .go_to_pose import GoToPose
-from .supporter import DEF_HOME_X, DEF_HOME_Y, MID_HOME_X, MID_HOME_Y, defenderTarget, midfielderTarget, supporterTarget
+from .supporter import TUNED, defenderTarget, midfielderTarget, supporterTarget
 from .team_comm import MESSAGE_STALE_US, ROLE_DEFENDER, ROLE_MIDFIELDER, ROLE_STRIKER, decodeMessage
 
 SEARCH_TURN_FRAMES = 90          # frames (3 s) without the ball before searching
@@ -39,12 +39,12 @@ MIDFIELDER_FIRST_SPOT = 1        # ... the midfielder its own side ...
 DEFENDER_FIRST_SPOT = 2          # ... and the defender the own half
 
 
-def homePosition(role):
-    """(x, y) a role walks back to while the ball is lost."""
+def homePosition(role, supporters):
+    """(x, y) a role walks back to while the ball is lost; supporters: the SupporterDef played."""
     if role == ROLE_DEFENDER:
-        return DEF_HOME_X, DEF_HOME_Y
+        return supporters.defHomeX, supporters.defHomeY
     if role == ROLE_MIDFIELDER:
-        return MID_HOME_X, MID_HOME_Y
+        return supporters.midHomeX, supporters.midHomeY
     return GOALIE_HOME_X, 0.0
 
 
@@ -65,15 +65,16 @@ def teamBall(playerNumber, messages, utime):
     return None if best is None else (float(best[1]), float(best[2]))
 
 
-def teamBallTarget(role, ballX, ballY, robotY):
+def teamBallTarget(role, ballX, ballY, robotY, supporters):
     """(x, y, theta): where the role stands for the ball at (ballX, ballY): the striker
-    behind it facing the opponent goal, a supporter at its algorithm's target facing it."""
+    behind it facing the opponent goal, a supporter at its algorithm's target (the numbers of
+    the SupporterDef `supporters`) facing it."""
     if role == ROLE_STRIKER:
         return pointBehindBall(robot.AbsCoord(ballX, ballY, 0.0), OPPONENT_GOAL_X, OPPONENT_GOAL_Y, BEHIND_BALL_DIST)
     if role == ROLE_DEFENDER:
-        x, y = defenderTarget(ballX, ballY)
+        x, y = defenderTarget(ballX, ballY, supporters)
     else:
-        x, y = midfielderTarget(ballX, ballY, robotY)
+        x, y = midfielderTarget(ballX, ballY, robotY, supporters)
     x, y = supporterTarget(x, y, ballX, ballY, robotY)
     return x, y, math.atan2(ballY - y, ballX - x)
 
@@ -87,7 +88,9 @@ def searchSpot(role, walk):
 
 
 class Search:
-    def __init__(self):
+    def __init__(self, supporters=TUNED):
+        """supporters: the SupporterDef whose targets and homes a lost supporter uses."""
+        self.supporters = supporters
         self.teamBallPose = GoToPose()
         self.spotPose = GoToPose()
 
@@ -100,11 +103,11 @@ class Search:
         pos = blackboard.localisation.robotPos
         ball = teamBall(blackboard.gameController.playerNumber, blackboard.receiver.messages, blackboard.utime)
         if ball is not None:
-            self.teamBallPose.setTarget(*teamBallTarget(role, ball[0], ball[1], pos.y))
+            self.teamBallPose.setTarget(*teamBallTarget(role, ball[0], ball[1], pos.y, self.supporters))
             return self.teamBallPose.tick(blackboard).body
         cycle, frame = divmod(lost - 1, SEARCH_CYCLE_FRAMES)
         if role != ROLE_STRIKER and cycle == 0:
-            homeX, homeY = homePosition(role)
+            homeX, homeY = homePosition(role, self.supporters)
             if frame >= SEARCH_TURN_LIMIT_FRAMES or distance(pos.x, pos.y, homeX, homeY) >= HOME_NEAR_DIST:
                 return None
         if frame < SEARCH_TURN_LIMIT_FRAMES:

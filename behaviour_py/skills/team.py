@@ -21,7 +21,7 @@ from .go_to_pose import GoToPose
 from .landmark_glance import LandmarkGlance
 from .search import Search
 from .striker import Striker
-from .supporter import Defender, Midfielder
+from .supporter import TUNED, Defender, Midfielder
 from .unstick import Unstick
 from .team_comm import (GOALIE_PLAYER, MESSAGE_EVERY_FRAMES, NO_BALL_DISTANCE, ROLE_DEFENDER, ROLE_GOALIE,
                         ROLE_MIDFIELDER, ROLE_NONE, ROLE_STRIKER, assignRole, encodeMessage, makeTeamInfo, roundMm)
@@ -86,16 +86,17 @@ def messageBallDistance(blackboard):
 
 
 class Team:
-    def __init__(self, fixedRole=ROLE_NONE, policy=None):
+    def __init__(self, fixedRole=ROLE_NONE, policy=None, supporters=TUNED):
         """fixedRole: play this role always (ROLE_NONE: assign roles from the messages);
-        policy: the striker's learned walker policy file (None: GoToPose)."""
+        policy: the striker's learned walker policy file (None: GoToPose); supporters: the
+        SupporterDef the midfielder and defender play (supporter.py: TUNED or THESIS)."""
         self.fixedRole = fixedRole
         self.role = fixedRole
-        self.skills = {ROLE_GOALIE: Goalie(), ROLE_STRIKER: Striker(policy), ROLE_DEFENDER: Defender(),
-                       ROLE_MIDFIELDER: Midfielder()}
+        self.skills = {ROLE_GOALIE: Goalie(), ROLE_STRIKER: Striker(policy), ROLE_DEFENDER: Defender(supporters),
+                       ROLE_MIDFIELDER: Midfielder(supporters)}
         self.readyPose = GoToPose()
         self.head = LandmarkGlance()
-        self.search = Search()
+        self.search = Search(supporters)
         self.unstick = Unstick()
         self.frame = 0
 

@@ -53,7 +53,9 @@ def python_constants():
     for name, module in modules.items():
         for node in ast.parse((PY_SKILLS / (name + ".py")).read_text()).body:
             if isinstance(node, ast.Assign) and node.targets[0].id.isupper():
-                values[node.targets[0].id] = getattr(module, node.targets[0].id)
+                value = getattr(module, node.targets[0].id)
+                if isinstance(value, (int, float, str)):  # not the SupporterDef presets: below
+                    values[node.targets[0].id] = value
     values.update(BALL_SEEN_CHEST=behaviour.BALL_SEEN_CHEST, BALL_LOST_CHEST=behaviour.BALL_LOST_CHEST)
     return values
 
@@ -68,3 +70,31 @@ def test_the_same_values_in_both_ports(name, value):
         assert python_constants()[name] == value
     else:
         assert python_constants()[name] == pytest.approx(value, rel=1e-6)
+
+
+# The supporters' numbers (SupporterDef): the C++ struct's defaults are the thesis's, and the
+# tuned preset sets fields in tunedSupporters() as `d.NAME = VALUE;`.
+CPP_FIELD = re.compile(r"^\s+float (\w+) = ([^;]+);", re.MULTILINE)
+CPP_TUNED_FIELD = re.compile(r"\bd\.(\w+) = ([^;]+);")
+
+
+def cpp_supporter_defs():
+    header = (CPP_SKILLS / "supporter.hpp").read_text()
+    struct = header[header.index("struct SupporterDef {"):]
+    struct = struct[:struct.index("};")]
+    thesis = {name: float(FLOAT_LITERAL.sub(r"\1", value)) for name, value in CPP_FIELD.findall(struct)}
+    source = (ROOT / "behaviour_cpp" / "src" / "skills" / "supporter.cpp").read_text()
+    tuned_body = source[source.index("const SupporterDef& tunedSupporters()"):]
+    tuned_body = tuned_body[:tuned_body.index("return tuned;")]
+    tuned = dict(thesis)
+    tuned.update({name: float(FLOAT_LITERAL.sub(r"\1", value)) for name, value in CPP_TUNED_FIELD.findall(tuned_body)})
+    return {"thesis": thesis, "tuned": tuned}
+
+
+@pytest.mark.parametrize("preset", ["thesis", "tuned"])
+def test_the_same_supporter_numbers_in_both_ports(preset):
+    cpp = cpp_supporter_defs()[preset]
+    python = vars(supporter.SUPPORTER_DEFS[preset])
+    assert sorted(cpp) == sorted(python)
+    for name, value in cpp.items():
+        assert python[name] == pytest.approx(value, rel=1e-6), name

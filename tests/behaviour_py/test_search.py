@@ -9,6 +9,7 @@ from boards import board, message
 
 from skills.search import (HOME_NEAR_DIST, SEARCH_CYCLE_FRAMES, SEARCH_TURN_FRAMES, SEARCH_TURN_LIMIT_FRAMES,
                            SEARCH_TURN_SPEED, Search, searchSpot, teamBall, teamBallTarget)
+from skills.supporter import THESIS
 from skills.team import Team
 from skills.team_comm import (MESSAGE_STALE_US, NO_BALL_DISTANCE, ROLE_DEFENDER, ROLE_MIDFIELDER, ROLE_STRIKER,
                               TeamInfo, encodeMessage)
@@ -41,13 +42,13 @@ def test_stale_penalised_and_own_sightings_do_not_count():
 
 def test_the_roles_stand_for_the_team_ball_as_for_their_own():
     # Striker: 200 mm behind the ball on the goal-ball line, facing the goal.
-    x, y, theta = teamBallTarget(ROLE_STRIKER, 1000.0, 0.0, 0.0)
+    x, y, theta = teamBallTarget(ROLE_STRIKER, 1000.0, 0.0, 0.0, THESIS)
     assert (x, y, theta) == pytest.approx((800.0, 0.0, 0.0))
     # Defender (Algorithm 4.2): ball at 0 -> 1250 behind it on the goal line, facing it.
-    x, y, theta = teamBallTarget(ROLE_DEFENDER, 0.0, 600.0, 0.0)
+    x, y, theta = teamBallTarget(ROLE_DEFENDER, 0.0, 600.0, 0.0, THESIS)
     assert (x, y, theta) == pytest.approx((-1250.0, 350.0, math.atan2(250.0, 1250.0)))
     # Midfielder (Algorithm 4.1): ball beyond 2000 -> (2200, 0), off the shooting path, facing the ball behind.
-    x, y, theta = teamBallTarget(ROLE_MIDFIELDER, 2100.0, 0.0, 100.0)
+    x, y, theta = teamBallTarget(ROLE_MIDFIELDER, 2100.0, 0.0, 100.0, THESIS)
     assert (x, y, theta) == pytest.approx((2200.0, 500.0, math.atan2(-500.0, -100.0)))
 
 

@@ -8,7 +8,7 @@ from boards import board, message
 from skills.field import clampOutOfOwnBox
 from skills.goalie import Goalie, goalieTarget
 from skills.striker import Striker
-from skills.supporter import Defender, Midfielder, defenderTarget, midfielderTarget, supporterTarget
+from skills.supporter import THESIS, Defender, Midfielder, defenderTarget, midfielderTarget, supporterTarget
 from skills.search import SEARCH_CYCLE_FRAMES, SEARCH_TURN_FRAMES, SEARCH_TURN_LIMIT_FRAMES, SEARCH_TURN_SPEED
 from skills.team import Team, readyPosition
 from skills.team_comm import (MESSAGE_STALE_US, NO_BALL_DISTANCE, ROLE_DEFENDER, ROLE_GOALIE, ROLE_MIDFIELDER,
@@ -22,32 +22,32 @@ GS = robot.GameState
 
 # Algorithm 4.1: the midfielder's position from the ball's x (thesis numbers).
 def test_midfielder_ball_beyond_2000_goes_to_2200_0():
-    assert midfielderTarget(2500.0, 300.0, 500.0) == pytest.approx((2200.0, 0.0))
+    assert midfielderTarget(2500.0, 300.0, 500.0, THESIS) == pytest.approx((2200.0, 0.0))
     assert supporterTarget(2200.0, 0.0, 2500.0, 300.0, 500.0) == pytest.approx((2200.0, 0.0))  # behind the ball
 
 
 def test_midfielder_ball_between_1200_and_2000_stands_1200_beside_it():
-    assert midfielderTarget(1500.0, 200.0, -500.0) == pytest.approx((1500.0, -1000.0))
-    assert midfielderTarget(1500.0, 200.0, 800.0) == pytest.approx((1500.0, 1400.0))
+    assert midfielderTarget(1500.0, 200.0, -500.0, THESIS) == pytest.approx((1500.0, -1000.0))
+    assert midfielderTarget(1500.0, 200.0, 800.0, THESIS) == pytest.approx((1500.0, 1400.0))
 
 
 def test_midfielder_ball_on_own_goal_line_is_2500_in_front_of_it():
-    assert midfielderTarget(-3000.0, 0.0, 1000.0) == pytest.approx((-500.0, 1000.0))
-    assert midfielderTarget(1200.0 - 4200.0 / 2, 0.0, 1000.0) == pytest.approx((-900.0 + 1250.0, 1000.0))
+    assert midfielderTarget(-3000.0, 0.0, 1000.0, THESIS) == pytest.approx((-500.0, 1000.0))
+    assert midfielderTarget(1200.0 - 4200.0 / 2, 0.0, 1000.0, THESIS) == pytest.approx((-900.0 + 1250.0, 1000.0))
 
 
 # Algorithm 4.2: the defender's position from the ball's x (thesis numbers), y blocking the
 # ball-own-goal line.
 def test_defender_ball_below_minus_800_goes_to_minus_1800_0():
-    assert defenderTarget(-1000.0, 400.0) == pytest.approx((-1800.0, 0.0))
+    assert defenderTarget(-1000.0, 400.0, THESIS) == pytest.approx((-1800.0, 0.0))
 
 
 def test_defender_ball_at_0_is_1250_behind_it_on_the_goal_line():
-    assert defenderTarget(0.0, 600.0) == pytest.approx((-1250.0, 350.0))
+    assert defenderTarget(0.0, 600.0, THESIS) == pytest.approx((-1250.0, 350.0))
 
 
 def test_defender_ball_beyond_1250_stops_at_minus_1200():
-    assert defenderTarget(1500.0, -900.0) == pytest.approx((-1200.0, -360.0))
+    assert defenderTarget(1500.0, -900.0, THESIS) == pytest.approx((-1200.0, -360.0))
 
 
 def test_goal_box_clamp():
@@ -71,7 +71,7 @@ def test_shooting_path_avoidance_in_front_of_the_ball():
 
 def test_supporters_face_the_ball_and_go_home_when_it_is_lost():
     # Defender at its target, facing the ball: stands.
-    assert Defender().tick(board((-1250.0, 0.0, 0.0), ball=(0.0, 0.0))).body.actionType == STAND
+    assert Defender(THESIS).tick(board((-1250.0, 0.0, 0.0), ball=(0.0, 0.0))).body.actionType == STAND
     # Ball lost for long: the midfielder walks home to (0, 800) (ahead-left: turns first).
     command = Midfielder().tick(board((0.0, 0.0, 0.0), ball=(1000.0, 0.0), seen=False, lost=91))
     assert command.body.actionType == WALK and command.body.turn == pytest.approx(1.5)

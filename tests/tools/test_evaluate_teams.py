@@ -44,3 +44,9 @@ def test_the_experiments_are_cells_of_one_sweep():
     assert len(matches) == 6
     assert {(m["cell"], m["team1"]) for m in matches} == {(0, "cpp:Team"), (1, "py:Striker")}
     assert matches[0]["launch"] == ["--set", "rules.half_s=300", "--duration", "10"]
+
+
+def test_first_seed_moves_every_experiment_to_another_seed_range():
+    matches = evaluate_teams.matches_of(["roles_cpp"], 3, [], [], first_seed=41)
+    assert [m["seed"] for m in matches] == [41, 42, 43]
+    assert {(m["team0"], m["team1"]) for m in matches} == {("cpp:Team", "cpp:Team,supporters=thesis")}

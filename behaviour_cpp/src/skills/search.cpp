@@ -14,9 +14,9 @@ namespace touchline::behaviour::skills {
 
 using namespace api;
 
-FieldPoint homePosition(int role) {
-  if (role == ROLE_DEFENDER) return {DEF_HOME_X, DEF_HOME_Y};
-  if (role == ROLE_MIDFIELDER) return {MID_HOME_X, MID_HOME_Y};
+FieldPoint homePosition(int role, const SupporterDef& supporters) {
+  if (role == ROLE_DEFENDER) return {supporters.defHomeX, supporters.defHomeY};
+  if (role == ROLE_MIDFIELDER) return {supporters.midHomeX, supporters.midHomeY};
   return {GOALIE_HOME_X, 0.f};
 }
 
@@ -35,10 +35,11 @@ std::optional<FieldPoint> teamBall(int playerNumber, const std::vector<TeamMessa
   return std::get<2>(*best);
 }
 
-AbsCoord teamBallTarget(int role, float ballX, float ballY, float robotY) {
+AbsCoord teamBallTarget(int role, float ballX, float ballY, float robotY, const SupporterDef& supporters) {
   if (role == ROLE_STRIKER)
     return pointBehindBall(AbsCoord{ballX, ballY, 0.f}, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, BEHIND_BALL_DIST);
-  FieldPoint target = role == ROLE_DEFENDER ? defenderTarget(ballX, ballY) : midfielderTarget(ballX, ballY, robotY);
+  FieldPoint target = role == ROLE_DEFENDER ? defenderTarget(ballX, ballY, supporters)
+                                            : midfielderTarget(ballX, ballY, robotY, supporters);
   target = supporterTarget(target.x, target.y, ballX, ballY, robotY);
   return AbsCoord{target.x, target.y, std::atan2(ballY - target.y, ballX - target.x)};
 }
@@ -58,14 +59,14 @@ std::optional<ActionCommand::Body> Search::tick(const Blackboard& blackboard, in
   const AbsCoord pos = blackboard.localisation.robotPos;
   const GameControllerBlackboard& gc = blackboard.gameController;
   if (const auto ball = teamBall(gc.playerNumber, blackboard.receiver.messages, blackboard.utime)) {
-    const AbsCoord target = teamBallTarget(role, ball->x, ball->y, pos.y);
+    const AbsCoord target = teamBallTarget(role, ball->x, ball->y, pos.y, supporters_);
     teamBallPose_.setTarget(target.x, target.y, target.theta);
     return teamBallPose_.tick(blackboard).body;
   }
   const int cycle = (lost - 1) / SEARCH_CYCLE_FRAMES;
   const int frame = (lost - 1) % SEARCH_CYCLE_FRAMES;
   if (role != ROLE_STRIKER && cycle == 0) {
-    const FieldPoint home = homePosition(role);
+    const FieldPoint home = homePosition(role, supporters_);
     if (frame >= SEARCH_TURN_LIMIT_FRAMES || distance(pos.x, pos.y, home.x, home.y) >= HOME_NEAR_DIST)
       return std::nullopt;
   }

@@ -30,8 +30,13 @@ TeamInfo messageInfo(const Blackboard& blackboard, int role) {
                       blackboard.localisation.ballPosRR.distance, ball.x, ball.y, pos.x, pos.y);
 }
 
-Team::Team(int fixedRole, const std::optional<std::string>& policy)
-    : fixedRole_(fixedRole), role_(fixedRole), striker_(policy) {}
+Team::Team(int fixedRole, const std::optional<std::string>& policy, const SupporterDef& supporters)
+    : fixedRole_(fixedRole),
+      role_(fixedRole),
+      striker_(policy),
+      defender_(supporters),
+      midfielder_(supporters),
+      search_(supporters) {}
 
 ActionCommand::All Team::tick(const Blackboard& blackboard) {
   role_ = chooseRole(blackboard);

@@ -62,9 +62,9 @@ TEST(Search, StalePenalisedAndOwnSightingsDoNotCount) {
 }
 
 TEST(Search, TheRolesStandForTheTeamBallAsForTheirOwn) {
-  expectPose(teamBallTarget(ROLE_STRIKER, 1000.f, 0.f, 0.f), 800.f, 0.f, 0.f);
-  expectPose(teamBallTarget(ROLE_DEFENDER, 0.f, 600.f, 0.f), -1250.f, 350.f, std::atan2(250.f, 1250.f));
-  expectPose(teamBallTarget(ROLE_MIDFIELDER, 2100.f, 0.f, 100.f), 2200.f, 500.f, std::atan2(-500.f, -100.f));
+  expectPose(teamBallTarget(ROLE_STRIKER, 1000.f, 0.f, 0.f, thesisSupporters()), 800.f, 0.f, 0.f);
+  expectPose(teamBallTarget(ROLE_DEFENDER, 0.f, 600.f, 0.f, thesisSupporters()), -1250.f, 350.f, std::atan2(250.f, 1250.f));
+  expectPose(teamBallTarget(ROLE_MIDFIELDER, 2100.f, 0.f, 100.f, thesisSupporters()), 2200.f, 500.f, std::atan2(-500.f, -100.f));
 }
 
 TEST(Search, ALostRobotWalksToTheTeamBallInsteadOfTurning) {

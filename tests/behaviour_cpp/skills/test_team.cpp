@@ -25,27 +25,27 @@ void expectPoint(const FieldPoint& p, float x, float y, float tolerance = 1e-3f)
 
 // Algorithm 4.1: the midfielder's position from the ball's x (thesis numbers).
 TEST(TeamMidfielder, BallBeyond2000GoesTo2200_0) {
-  expectPoint(midfielderTarget(2500.f, 300.f, 500.f), 2200.f, 0.f);
+  expectPoint(midfielderTarget(2500.f, 300.f, 500.f, thesisSupporters()), 2200.f, 0.f);
   expectPoint(supporterTarget(2200.f, 0.f, 2500.f, 300.f, 500.f), 2200.f, 0.f); // behind the ball
 }
 
 TEST(TeamMidfielder, BallBetween1200And2000Stands1200BesideIt) {
-  expectPoint(midfielderTarget(1500.f, 200.f, -500.f), 1500.f, -1000.f);
-  expectPoint(midfielderTarget(1500.f, 200.f, 800.f), 1500.f, 1400.f);
+  expectPoint(midfielderTarget(1500.f, 200.f, -500.f, thesisSupporters()), 1500.f, -1000.f);
+  expectPoint(midfielderTarget(1500.f, 200.f, 800.f, thesisSupporters()), 1500.f, 1400.f);
 }
 
 TEST(TeamMidfielder, BallOnOwnGoalLineIs2500InFrontOfIt) {
-  expectPoint(midfielderTarget(-3000.f, 0.f, 1000.f), -500.f, 1000.f);
-  expectPoint(midfielderTarget(1200.f - 4200.f / 2, 0.f, 1000.f), -900.f + 1250.f, 1000.f);
+  expectPoint(midfielderTarget(-3000.f, 0.f, 1000.f, thesisSupporters()), -500.f, 1000.f);
+  expectPoint(midfielderTarget(1200.f - 4200.f / 2, 0.f, 1000.f, thesisSupporters()), -900.f + 1250.f, 1000.f);
 }
 
 // Algorithm 4.2: the defender's position from the ball's x (thesis numbers), y blocking the
 // ball-own-goal line.
-TEST(TeamDefender, BallBelowMinus800GoesToMinus1800_0) { expectPoint(defenderTarget(-1000.f, 400.f), -1800.f, 0.f); }
+TEST(TeamDefender, BallBelowMinus800GoesToMinus1800_0) { expectPoint(defenderTarget(-1000.f, 400.f, thesisSupporters()), -1800.f, 0.f); }
 
-TEST(TeamDefender, BallAt0Is1250BehindItOnTheGoalLine) { expectPoint(defenderTarget(0.f, 600.f), -1250.f, 350.f); }
+TEST(TeamDefender, BallAt0Is1250BehindItOnTheGoalLine) { expectPoint(defenderTarget(0.f, 600.f, thesisSupporters()), -1250.f, 350.f); }
 
-TEST(TeamDefender, BallBeyond1250StopsAtMinus1200) { expectPoint(defenderTarget(1500.f, -900.f), -1200.f, -360.f); }
+TEST(TeamDefender, BallBeyond1250StopsAtMinus1200) { expectPoint(defenderTarget(1500.f, -900.f, thesisSupporters()), -1200.f, -360.f); }
 
 TEST(TeamSupporter, GoalBoxClamp) {
   expectPoint(clampOutOfOwnBox(-2700.f, 300.f), -2200.f, 300.f);
@@ -67,7 +67,7 @@ TEST(TeamSupporter, ShootingPathAvoidanceInFrontOfTheBall) {
 }
 
 TEST(TeamSupporter, FaceTheBallAndGoHomeWhenItIsLost) {
-  EXPECT_EQ(Defender().tick(board({-1250.f, 0.f, 0.f}, 0.f, 0.f)).body.actionType, AT::STAND);
+  EXPECT_EQ(Defender(thesisSupporters()).tick(board({-1250.f, 0.f, 0.f}, 0.f, 0.f)).body.actionType, AT::STAND);
   const auto command = Midfielder().tick(board({0.f, 0.f, 0.f}, 1000.f, 0.f, false, 91));
   EXPECT_EQ(command.body.actionType, AT::WALK);
   EXPECT_NEAR(command.body.turn, 1.5f, 1e-5f);

@@ -8,6 +8,7 @@
 
 #include "touchline/behaviour/skills/field.hpp"
 #include "touchline/behaviour/skills/go_to_pose.hpp"
+#include "touchline/behaviour/skills/supporter.hpp"
 #include "touchline/robot_api/blackboard.hpp"
 
 namespace touchline::behaviour::skills {
@@ -24,25 +25,29 @@ inline constexpr int STRIKER_FIRST_SPOT = 0;          ///< the striker searches 
 inline constexpr int MIDFIELDER_FIRST_SPOT = 1;       ///< ... the midfielder its own side ...
 inline constexpr int DEFENDER_FIRST_SPOT = 2;         ///< ... and the defender the own half
 
-/// (x, y) a role walks back to while the ball is lost.
-FieldPoint homePosition(int role);
+/// (x, y) a role walks back to while the ball is lost; supporters: the SupporterDef played.
+FieldPoint homePosition(int role, const SupporterDef& supporters);
 /// (x, y) of the ball as the teammates see it, or nullopt: the sighting of the teammate
 /// nearest to it among those whose message is fresh, says the ball was seen, and is not from
 /// a penalised robot (ties: the lower player number).
 std::optional<FieldPoint> teamBall(int playerNumber, const std::vector<api::TeamMessage>& messages, int64_t utime);
 /// (x, y, theta): where the role stands for the ball at (ballX, ballY): the striker behind it
-/// facing the opponent goal, a supporter at its algorithm's target facing it.
-api::AbsCoord teamBallTarget(int role, float ballX, float ballY, float robotY);
+/// facing the opponent goal, a supporter at its algorithm's target (the numbers of
+/// `supporters`) facing it.
+api::AbsCoord teamBallTarget(int role, float ballX, float ballY, float robotY, const SupporterDef& supporters);
 /// (x, y) of the role's walk-th search spot (0: its first).
 FieldPoint searchSpot(int role, int walk);
 
 class Search {
  public:
+  /// supporters: the SupporterDef whose targets and homes a lost supporter uses.
+  explicit Search(const SupporterDef& supporters = tunedSupporters()) : supporters_(supporters) {}
   /// The body request of a field player of `role` searching, or nullopt while it has not lost
   /// the ball for long enough, or plays the role's own skill (a supporter walking home).
   std::optional<api::ActionCommand::Body> tick(const api::Blackboard& blackboard, int role);
 
  private:
+  SupporterDef supporters_;
   GoToPose teamBallPose_;
   GoToPose spotPose_;
 };

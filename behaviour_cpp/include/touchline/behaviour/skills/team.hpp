@@ -47,8 +47,10 @@ TeamInfo messageInfo(const api::Blackboard& blackboard, int role);
 class Team : public api::Behaviour {
  public:
   /// fixedRole: play this role always (ROLE_NONE: assign roles from the messages); policy:
-  /// the striker's learned walker policy file (nullopt: GoToPose).
-  explicit Team(int fixedRole = ROLE_NONE, const std::optional<std::string>& policy = std::nullopt);
+  /// the striker's learned walker policy file (nullopt: GoToPose); supporters: the
+  /// SupporterDef the midfielder and defender play.
+  explicit Team(int fixedRole = ROLE_NONE, const std::optional<std::string>& policy = std::nullopt,
+                const SupporterDef& supporters = tunedSupporters());
   api::ActionCommand::All tick(const api::Blackboard& blackboard) override;
   int role() const { return role_; }
 
