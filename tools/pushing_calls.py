@@ -8,8 +8,11 @@ pusher on its bench): the victim is the pusher's nearest opponent (as the match 
 robot that may fall); over each of WINDOWS_S before the call, each robot's speed
 towards the other (its body's displacement along the line from it to the other, divided
 by the window: + walking into the other, - backing away), both robots' distances to the
-ball, and how long the pair had been in contact (body centres closer than CONTACT_MM) when
-the call came.
+ball, how long the pair had been in contact (body centres closer than CONTACT_MM) when
+the call came, each robot's role (its last team message before the call: team_comm.py's
+byte 2, as match_stats.py reads it) and where the victim was as the pusher faced
+(victim_bearing_deg, 0 straight ahead: within SENSED_BEARING_DEG the sonars and the middle
+of the camera's view can see it, so avoidance can act).
 
   tools/pushing_calls.py LOG... [--calls calls.jsonl]
 """
@@ -23,11 +26,13 @@ import sys
 from pathlib import Path
 
 import touchline_paths
+from match_stats import ROLE_NAMES
 from touchline_version import add_version_option
 
 CONTACT_MM = 300.0        # rules.contact_distance_mm's default
 WINDOWS_S = (0.25, 0.5, 1.0)
 HISTORY_S = 10.0          # truth kept per robot: enough to time a long contact
+SENSED_BEARING_DEG = 30.0  # deg: a victim this far off the pusher's heading is in its sonars' and camera's middle
 
 
 def towards(h: list, other: tuple, window_s: float) -> float | None:
@@ -49,7 +54,7 @@ def towards(h: list, other: tuple, window_s: float) -> float | None:
 
 def analyse(log: Path) -> list[dict]:
     import lcm
-    from touchline import match_event_t, world_truth_t
+    from touchline import act_t, match_event_t, world_truth_t
 
     history: dict[tuple, list] = {}   # (team, player) -> [(utime, x, y)] while on the field
     contact_since: dict[tuple, int] = {}  # (id, id) sorted -> utime contact began
@@ -59,8 +64,13 @@ def analyse(log: Path) -> list[dict]:
     last = current = None
     contact_before: dict[tuple, int] = {}
     calls = []
+    roles: dict[tuple, str] = {}  # (team, player) -> the role of its last team message
     for event in lcm.EventLog(str(log), "r"):
-        if event.channel == "TL_TRUTH":
+        if event.channel.startswith("TL_ACT_"):
+            act = act_t.decode(event.data)
+            if act.team_message_size >= 3:
+                roles[(act.team, act.player)] = ROLE_NAMES.get(act.team_message[2], str(act.team_message[2]))
+        elif event.channel == "TL_TRUTH":
             truth = world_truth_t.decode(event.data)
             last, current = current, truth
             contact_before = dict(contact_since)
@@ -99,6 +109,10 @@ def analyse(log: Path) -> list[dict]:
                     "distance_mm": dist[vkey],
                     "pusher_ball_mm": math.hypot(p.body.x_mm - last.ball_x_mm, p.body.y_mm - last.ball_y_mm),
                     "victim_ball_mm": math.hypot(v.body.x_mm - last.ball_x_mm, v.body.y_mm - last.ball_y_mm)}
+            call["pusher_role"] = roles.get(pkey, "")
+            call["victim_role"] = roles.get(vkey, "")
+            bearing = math.atan2(v.body.y_mm - p.body.y_mm, v.body.x_mm - p.body.x_mm) - p.body.theta_rad
+            call["victim_bearing_deg"] = math.degrees(math.remainder(bearing, 2 * math.pi))
             pair = tuple(sorted([pkey, vkey]))
             since = contact_before.get(pair)
             # 0: not in contact a frame before the call (the contact began in the judged frame).
@@ -147,6 +161,10 @@ def summarise(calls: list) -> None:
           share(calls, lambda c: (c["pusher_towards_0.5"] or 0) <= 25 and (c["victim_towards_0.5"] or 0) <= 25))
     print("both within 700 mm of the ball:",
           share(calls, lambda c: c["pusher_ball_mm"] < 700 and c["victim_ball_mm"] < 700))
+    print(f"victim within {SENSED_BEARING_DEG:.0f} deg of the pusher's heading:",
+          share(calls, lambda c: abs(c["victim_bearing_deg"]) <= SENSED_BEARING_DEG))
+    for role in sorted({c["pusher_role"] for c in calls}):
+        print(f"pusher's role {role or '(none)'}:", share(calls, lambda c, r=role: c["pusher_role"] == r))
 
 
 def main() -> int:

@@ -1,4 +1,5 @@
-"""The pushing-call analysis' speed towards the other robot, from a robot's sampled path."""
+"""The pushing-call analysis: the speed towards the other robot from a robot's sampled path, and each call's roles and bearing."""
+import math
 import sys
 from pathlib import Path
 
@@ -46,3 +47,47 @@ def test_a_missing_or_foreign_log_is_one_line_and_a_failure(tmp_path):
         done = subprocess.run([sys.executable, str(script), str(log)], capture_output=True, text=True)
         assert done.returncode == 1 and done.stderr.count("\n") == 1, done.stderr
         assert done.stderr.startswith(f"pushing_calls: {log}: ") and reason in done.stderr
+
+
+def test_a_call_names_both_roles_and_where_the_victim_stood(tmp_path):
+    """A synthetic match log: team 0's striker walks at 150 mm/s into team 1's defender, who
+    stands 90 degrees to its left (out of its sonars' and camera's middle); the referee calls
+    team 0 #2 for pushing."""
+    import touchline_paths
+    sys.path[:0] = touchline_paths.lcm_python_dirs()
+    import lcm
+    from touchline import act_t, match_event_t, pose2d_t, robot_truth_t, world_truth_t
+
+    def robot(team, player, x, y, theta):
+        r = robot_truth_t()
+        r.team, r.player, r.active = team, player, True
+        for pose in ("body", "left_foot", "right_foot"):
+            p = pose2d_t()
+            p.x_mm, p.y_mm, p.theta_rad = x, y, theta
+            setattr(r, pose, p)
+        return r
+
+    def act(team, player, role):
+        a = act_t()
+        a.team, a.player, a.localised = team, player, pose2d_t()
+        a.team_message_size, a.team_message = 14, bytes([2, 0, role] + [0] * 11)
+        return a
+
+    log = tmp_path / "match.lcmlog"
+    out = lcm.EventLog(str(log), "w", overwrite=True)
+    out.write_event(0, "TL_ACT_0_2", act(0, 2, 2).encode())  # striker
+    out.write_event(0, "TL_ACT_1_3", act(1, 3, 3).encode())  # defender
+    for k in range(61):  # 2 s at 30 Hz: team 0 #2 walks along +y (its left) into the other
+        t = world_truth_t()
+        t.utime, t.frame = k * FRAME_US, k
+        t.robots = [robot(0, 2, 0.0, 150.0 * k * FRAME_US * 1e-6 - 300.0, 0.0), robot(1, 3, 0.0, 250.0, math.pi)]
+        t.num_robots = len(t.robots)
+        out.write_event(t.utime, "TL_TRUTH", t.encode())
+    e = match_event_t()
+    e.utime, e.kind, e.team, e.player, e.text = 61 * FRAME_US, match_event_t.PENALTY, 0, 2, "pushing"
+    out.write_event(e.utime, "TL_EVENT", e.encode())
+    out.close()
+    (call,) = pushing_calls.analyse(log)
+    assert (call["pusher_role"], call["victim_role"]) == ("striker", "defender")
+    assert abs(call["victim_bearing_deg"] - 90.0) < 1.0
+    assert abs(call["pusher_towards_0.5"] - 150.0) < 1.0
