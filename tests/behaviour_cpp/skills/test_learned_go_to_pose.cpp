@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "boards.hpp"
+#include "rejection.hpp"
 #include "policy_files.hpp"
 #include "touchline/behaviour/registry.hpp"
 #include "touchline/behaviour/skills/go_to_ball.hpp"
@@ -18,10 +19,9 @@
 
 using namespace touchline::api;
 using namespace touchline::behaviour::skills;
-using touchline::behaviour::BehaviourError;
 using touchline::behaviour::make_behaviour;
-using touchline::behaviour::Params;
 using touchline::behaviour::test::board;
+using touchline::behaviour::test::rejection;
 using touchline::behaviour::test::TestDataDir;
 using touchline::behaviour::test::writePolicy;
 using ActionCommand::ActionType;
@@ -37,15 +37,6 @@ const Body RIGHT{ActionType::WALK, 0.f, 0.f, -1.f};
 
 Body body(const ActionCommand::All& command) {
   return {command.body.actionType, command.body.forward, command.body.left, command.body.turn};
-}
-
-std::string rejection(const std::string& skill, const Params& params) {
-  try {
-    make_behaviour(skill, params);
-  } catch (const BehaviourError& e) {
-    return e.what();
-  }
-  return "accepted";
 }
 
 } // namespace

@@ -10,16 +10,16 @@
 #include <gtest/gtest.h>
 
 #include "boards.hpp"
+#include "rejection.hpp"
 #include "touchline/behaviour/registry.hpp"
 #include "touchline/behaviour/skills/search.hpp"
 #include "touchline/behaviour/skills/team_comm.hpp"
 
 using namespace touchline::api;
 using namespace touchline::behaviour::skills;
-using touchline::behaviour::BehaviourError;
 using touchline::behaviour::make_behaviour;
-using touchline::behaviour::Params;
 using touchline::behaviour::test::board;
+using touchline::behaviour::test::rejection;
 using touchline::behaviour::test::teamBoard;
 using AT = ActionCommand::ActionType;
 
@@ -28,15 +28,6 @@ namespace {
 void expectPoint(const FieldPoint& p, float x, float y) {
   EXPECT_NEAR(p.x, x, 1e-3f);
   EXPECT_NEAR(p.y, y, 1e-3f);
-}
-
-std::string rejection(const std::string& skill, const Params& params) {
-  try {
-    make_behaviour(skill, params);
-  } catch (const BehaviourError& e) {
-    return e.what();
-  }
-  return "accepted";
 }
 
 const AbsCoord THESIS_SPOT{-1250.f, 350.f, std::atan2(250.f, 1250.f)}; ///< the thesis defender's, ball (0, 600)
