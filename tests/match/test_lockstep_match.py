@@ -174,7 +174,10 @@ def lossy_loopback():
 
 
 def test_a_lost_sense_or_answer_is_sent_again_and_no_frame_is_missed(tmp_path, lossy_loopback):
-    match = start_world(tmp_path, 2, 3.0)
+    # The resends alone must save every frame: the robot timeout (wall time, 1 s by default) is
+    # raised so that a process stalled on a loaded machine (CI once saw 76 of 90 frames) is not
+    # taken for a lost packet. Timeouts have their own tests.
+    match = start_world(tmp_path, 2, 3.0, "--robot-timeout-ms", "10000")
     start_robot(match, 0, 1, "walk", forward=100)
     start_robot(match, 1, 1, "walk", forward=100)
     summary = match.finish()
