@@ -121,6 +121,14 @@ EPISODE_GAP_S = 5.0  # s: stuck samples this close together are one episode (the
 ROLE_NAMES = {1: "goalie", 2: "striker", 3: "defender", 4: "midfielder"}  # team_comm.py's role byte
 
 
+def message_role(act) -> str | None:
+    """The role named in the team message an act_t carries (team_comm.py's byte 2), or None
+    when it carries none (the robot keeps the role of its last message)."""
+    if act.team_message_size < 3:
+        return None
+    return ROLE_NAMES.get(act.team_message[2], str(act.team_message[2]))
+
+
 def stuck_episodes(log: Path) -> list[dict]:
     """Every stuck episode of a match (for finding why robots get stuck): a robot's run of
     stuck samples, as analyse_log counts them, from the start of its first window (time_s,
@@ -150,8 +158,7 @@ def stuck_episodes(log: Path) -> list[dict]:
         elif event.channel.startswith("TL_ACT_"):
             act = act_t.decode(event.data)
             state = acts.setdefault((act.team, act.player), ["", 0, None])
-            if act.team_message_size >= 3:
-                state[0] = ROLE_NAMES.get(act.team_message[2], str(act.team_message[2]))
+            state[0] = message_role(act) or state[0]
             state[1:] = [act.ball_lost_frames, (act.localised.x_mm, act.localised.y_mm, act.localised.theta_rad)]
         elif event.channel == "TL_TRUTH":
             truth_frames += 1

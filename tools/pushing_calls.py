@@ -26,7 +26,7 @@ import sys
 from pathlib import Path
 
 import touchline_paths
-from match_stats import ROLE_NAMES
+from match_stats import message_role
 from touchline_version import add_version_option
 
 CONTACT_MM = 300.0        # rules.contact_distance_mm's default
@@ -68,8 +68,8 @@ def analyse(log: Path) -> list[dict]:
     for event in lcm.EventLog(str(log), "r"):
         if event.channel.startswith("TL_ACT_"):
             act = act_t.decode(event.data)
-            if act.team_message_size >= 3:
-                roles[(act.team, act.player)] = ROLE_NAMES.get(act.team_message[2], str(act.team_message[2]))
+            if role := message_role(act):
+                roles[(act.team, act.player)] = role
         elif event.channel == "TL_TRUTH":
             truth = world_truth_t.decode(event.data)
             last, current = current, truth

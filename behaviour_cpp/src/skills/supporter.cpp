@@ -1,5 +1,7 @@
 #include "touchline/behaviour/skills/supporter.hpp"
 
+#include <utility>
+
 #include "touchline/behaviour/skills/ball.hpp"
 
 namespace touchline::behaviour::skills {
@@ -24,14 +26,30 @@ const SupporterDef& tunedSupporters() {
   return tuned;
 }
 
+namespace {
+
+/// The presets the skill parameter supporters=NAME picks from, the default first (as
+/// supporter.py's SUPPORTER_DEFS).
+const std::vector<std::pair<std::string, const SupporterDef*>>& presets() {
+  static const std::vector<std::pair<std::string, const SupporterDef*>> all = {{"tuned", &tunedSupporters()},
+                                                                              {"thesis", &thesisSupporters()}};
+  return all;
+}
+
+} // namespace
+
 const std::vector<std::string>& supporterDefNames() {
-  static const std::vector<std::string> names = {"tuned", "thesis"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> found;
+    for (const auto& [name, def] : presets()) found.push_back(name);
+    return found;
+  }();
   return names;
 }
 
 const SupporterDef* supporterDef(const std::string& name) {
-  if (name == "tuned") return &tunedSupporters();
-  if (name == "thesis") return &thesisSupporters();
+  for (const auto& [known, def] : presets())
+    if (known == name) return def;
   return nullptr;
 }
 
