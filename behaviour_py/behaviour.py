@@ -170,6 +170,13 @@ def makeBehaviour(params):
     return SkillBehaviour(body, makeHead())
 
 
+def check_params(params):
+    """Raises BehaviourError (one line) when params ask for a skill or parameter that does not
+    exist; the shim calls it before the match, so a typo stops the start instead of leaving the
+    robot standing."""
+    makeBehaviour(dict(params))
+
+
 _behaviour = None
 _params = None
 

@@ -5,10 +5,11 @@ shim's failure or a robot standing through a whole match.
 
 The programs judge their own options (one source of truth): `sim_world --check` loads the
 world config with every --set through the world's own loader and prints the match's planned
-length (read here for the progress bar); `robot_shim --check` makes a C++ behaviour with its
-parameters and reads the robot's config files. A Python skill is only made when the robot
-first ticks, so its name is checked here against the SKILL_NAMES of the Python behaviour's
-behaviour.py (behaviour_py/behaviour.py, or --python-dir's), read without importing it.
+length (read here for the progress bar); `robot_shim --check` makes the behaviour with its
+parameters (a Python module's optional check_params(params) judges them) and reads the
+robot's config files. In process no robot_shim runs, so a Python skill's name is checked
+here against the SKILL_NAMES of the Python behaviour's behaviour.py (behaviour_py/behaviour.py,
+or --python-dir's), read without importing it; touchline_match judges the rest as it starts.
 """
 from __future__ import annotations
 

@@ -90,8 +90,8 @@ int main(int argc, char** argv) {
   apps::add_log_level_option(options, log_level);
   options.add_options()
     ("check", "check the options, the config files and the behaviour as for a match and exit (0, or 2 with the "
-     "one-line error) without joining one: a C++ behaviour is made with its --param values; for Python only "
-     "--python-dir is checked (its module is imported, and its skill read, when the robot plays)");
+     "one-line error) without joining one: the behaviour is made with its --param values (a Python module is "
+     "imported and its check_params(params) called, if it has one)");
   robot::RobotDef& def = robot_options.def;
   transport::RobotNodeDef& node = robot_options.node;
 
@@ -114,12 +114,9 @@ int main(int argc, char** argv) {
     if (const auto problem = transport::lcm_url_problem(node.lcm_url))
       throw ConfigError("--lcm-url '" + node.lcm_url + "': cannot open LCM: " + *problem);
     api::set_data_dir(robot_options.data_dir); // before the behaviour is made: it may load its data
-    if (vm.count("check")) {
-      if (!robot::python_module(def.behaviour)) apps::make_robot_behaviour(robot_options, "robot_shim");
-      else if (!std::filesystem::is_directory(def.behaviour.python_dir))
-        throw po::error("--python-dir " + def.behaviour.python_dir + " is not a directory");
-      return 0;
-    }
+    const bool check_only = vm.count("check") > 0;
+    if (check_only && robot::python_module(def.behaviour) && !std::filesystem::is_directory(def.behaviour.python_dir))
+      throw po::error("--python-dir " + def.behaviour.python_dir + " is not a directory");
     // From here on a stop signal must reach Python: a module may hang at import.
     handle_stop_signals(def.id.team, def.id.player);
     if (robot::python_module(def.behaviour)) {
@@ -129,6 +126,7 @@ int main(int argc, char** argv) {
     }
     behaviour = apps::make_robot_behaviour(
         robot_options, "robot_shim " + std::to_string(def.id.team) + "/" + std::to_string(def.id.player));
+    if (check_only) return 0;
   } catch (const po::error& e) {
     log->error("{} (see --help)", e.what());
     return kUsageError;

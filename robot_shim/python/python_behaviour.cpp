@@ -220,6 +220,28 @@ PythonBehaviour::PythonBehaviour(PythonBehaviourDef def) : def_(std::move(def)) 
     leave();
     throw PythonBehaviourError("Python module '" + def_.module + "' has no tick(blackboard) function");
   }
+  if (healthy_) check_params();
+}
+
+void PythonBehaviour::check_params() {
+  // A module's optional check_params(params) judges robot.params before the match, as a C++
+  // behaviour's factory does: a wrong parameter is a usage error now, not a standing robot.
+  if (!py::hasattr(py_->module, "check_params") || !PyCallable_Check(py_->module.attr("check_params").ptr()))
+    return;
+  try {
+    const TickGuard guard(def_.tick_timeout_us);
+    py_->module.attr("check_params")(py_->params);
+  } catch (const py::error_already_set& e) {
+    leave();
+    if (is_stopping(e)) throw PythonBehaviourError("stopped while checking the Python behaviour's parameters");
+    if (is_tick_timeout(e)) throw PythonBehaviourError("Python module '" + def_.module + "': check_params() timed out");
+    // The exception's own message is the user's line (e.g. "Team: unknown parameter 'x'").
+    std::string message = py::str(e.value());
+    message = message.substr(0, message.find('\n'));
+    throw PythonBehaviourError(message.empty() ? "Python module '" + def_.module + "': check_params() raised " +
+                                                     std::string(py::str(e.type().attr("__name__")))
+                                               : message);
+  }
 }
 
 PythonBehaviour::~PythonBehaviour() {

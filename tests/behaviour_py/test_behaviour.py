@@ -90,3 +90,10 @@ def test_unknown_skill_lists_the_known_ones():
 def test_bad_parameters_are_rejected(params):
     with pytest.raises(behaviour.BehaviourError):
         behaviour.makeBehaviour(params)
+    with pytest.raises(behaviour.BehaviourError):  # the shim's check before the match says the same
+        behaviour.check_params(params)
+
+
+def test_check_params_passes_what_the_skills_take(dataDir):
+    behaviour.check_params({"skill": "Team", "supporters": "thesis", "walker": "learned"})
+    behaviour.check_params({})  # the default skill

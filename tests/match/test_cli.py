@@ -156,6 +156,11 @@ def test_check_modes_judge_a_match_without_playing_it():
     assert run(ROBOT_SHIM, *SHIM, "--check", "--behaviour", "py").stdout == ""
     expect_usage_error(run(ROBOT_SHIM, *SHIM, "--check", "--behaviour", "Team", "--param", "speed=fast"),
                        "Team: unknown parameter 'speed'")
+    # A Python behaviour is imported and its check_params(params) judges the parameters.
+    expect_usage_error(run(ROBOT_SHIM, *SHIM, "--check", "--behaviour", "py", "--param", "skill=Team", "--param",
+                           "walker=neural"), "Team: parameter walker must be hand or learned (got 'neural')")
+    expect_usage_error(run(ROBOT_SHIM, *SHIM, "--check", "--behaviour", "py", "--param", "skill=Nope"),
+                       "unknown skill 'Nope' (known: GoToPose,")
     expect_usage_error(run(ROBOT_SHIM, *SHIM, "--check", "--behaviour", "nope"),
                        "unknown behaviour 'nope' (known: stand, walk, goto,")
     expect_usage_error(run(ROBOT_SHIM, *SHIM, "--check", "--behaviour", "py", "--python-dir", "/nonexistent"),

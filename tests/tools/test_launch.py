@@ -206,6 +206,15 @@ def test_team_specs_carry_skill_parameters():
     assert "--team1 runswift:WalkAround needs --runswift-dir (a rUNSWift behaviours folder)" in result.stderr
 
 
+def test_a_python_teams_bad_parameter_stops_the_match_before_it_starts():
+    # behaviour.py's check_params, called by robot_shim --check and by touchline_match as it makes the robots.
+    for mode in ([], ["--in-process"]):
+        result = launch("--team1", "py:Team,supporters=best", "--no-log", *mode)
+        assert result.returncode == 2, (mode, result.stderr)
+        assert "Team: parameter supporters must be tuned or thesis (got 'best')" in result.stderr, (mode, result.stderr)
+        assert "PLAYING" not in result.stdout, mode
+
+
 def test_walk_engines_are_chosen_per_team_and_known_to_the_shim(tmp_path):
     sys.path.insert(0, str(ROOT / "tools"))
     from launch import WALK_ENGINES, parse_args

@@ -206,6 +206,36 @@ TEST_F(PythonRobot, AMissingModuleIsAOneLineError) {
   }
 }
 
+TEST_F(PythonRobot, CheckParamsJudgesTheParamsBeforeTheFirstTick) {
+  install("checks_params.py");
+  auto d = def();
+  d.params = {{"forward", "120"}};
+  start(d);
+  using Params = std::map<std::string, std::string>;
+  const std::vector<Params> checked = module().attr("CHECKED").cast<std::vector<Params>>();
+  EXPECT_EQ(checked, std::vector<Params>{d.params});
+  expect_walking(step(), 120);
+}
+
+TEST_F(PythonRobot, AParameterCheckParamsRefusesIsItsOneLineError) {
+  install("checks_params.py");
+  auto d = def();
+  d.params = {{"speed", "fast"}};
+  try {
+    start(d);
+    FAIL() << "no error";
+  } catch (const PythonBehaviourError& e) {
+    EXPECT_STREQ(e.what(), "Walker: unknown parameter 'speed'");
+  }
+  d.params = {{"forward", "quick"}}; // float() raises: its message, whatever the exception
+  try {
+    start(d);
+    FAIL() << "no error";
+  } catch (const PythonBehaviourError& e) {
+    EXPECT_STREQ(e.what(), "could not convert string to float: 'quick'");
+  }
+}
+
 TEST_F(PythonRobot, AModuleFromElsewhereOnSysPathIsNotTheBehaviour) {
   // `json` imports fine, but not from the python dir: the behaviour must come from there.
   EXPECT_THROW(start(def("json")), PythonBehaviourError);
@@ -431,6 +461,18 @@ TEST_F(PythonRobot, AModuleThatHangsAtImportIsInterruptedAndItsFixLoads) {
   install("walker.py");
   let_watcher_look();
   expect_walking(step(), 150);
+}
+
+TEST_F(PythonRobot, ACheckParamsThatHangsIsInterruptedAndIsAOneLineError) {
+  install("check_params_loops.py");
+  auto d = def();
+  d.tick_timeout_us = kShortTimeoutUs;
+  try {
+    start(d);
+    FAIL() << "no error";
+  } catch (const PythonBehaviourError& e) {
+    EXPECT_STREQ(e.what(), "Python module 'behaviour': check_params() timed out");
+  }
 }
 
 TEST_F(PythonRobot, TimeTheProcessSpentStoppedDoesNotCount) {

@@ -86,7 +86,8 @@ struct PythonBehaviourDef {
 class PythonBehaviour : public api::Behaviour {
  public:
   /// Imports the module. Throws PythonBehaviourError when no interpreter runs, the
-  /// directory or the module does not exist, or the module has no callable tick(). An
+  /// directory or the module does not exist, the module has no callable tick(), or its
+  /// optional check_params(params) raises (the exception's first line is the error). An
   /// exception while importing (a syntax error, say) is not thrown: the behaviour starts
   /// in the error state and recovers when the files are fixed.
   explicit PythonBehaviour(PythonBehaviourDef def);
@@ -127,6 +128,9 @@ class PythonBehaviour : public api::Behaviour {
   /// (Re)imports the module. Returns false and reports when it raised or (unless
   /// `starting`, when the constructor throws instead) lacks tick().
   bool load(bool starting);
+  /// Calls the module's check_params(robot.params), if it has one; throws
+  /// PythonBehaviourError with its exception's first line when it raises.
+  void check_params();
   /// Logs `what` (and the traceback of `error`) unless an error was logged since the
   /// files last changed.
   void report_once(const std::string& what, const pybind11::error_already_set* error);
