@@ -1,9 +1,11 @@
 """GoToPose: walk to a field pose. Thesis Algorithm 4.3 with the forward-first fix.
 
 Far from the target the robot turns to face it and walks forward (it walks faster forward
-than sideways); within FORWARD_FIRST_DIST it runs Algorithm 4.3: turn on the spot while the
-heading is off by more than TURN_FIRST_ANGLE, else walk the forward/left decomposition of
-the target while turning to the target heading. Arrived (with hysteresis): stand, making
+than sideways); within FORWARD_FIRST_DIST, or wherever that is faster (a target behind a
+robot that must end facing the other way: a defender falling back, facing the ball), it runs
+Algorithm 4.3: turn on the spot while the heading is off by more than TURN_FIRST_ANGLE, else
+walk the forward/left decomposition of the target while turning to the target heading.
+Which is faster is estimated from the walk's limits (directTime, forwardFirstTime). Arrived (with hysteresis): stand, making
 way for a robot ahead. Every walk goes through Avoid (avoid.py): around robots, out of the
 own goal box, backing off when blocked.
 """
@@ -13,18 +15,34 @@ import actioncommand
 import robot
 
 from .avoid import Avoid
-from .robot_limits import clampTurn, clampWalk
+from .robot_limits import MAX_FORWARD, MAX_TURN, clampTurn, clampWalk
 
 WALK_GAIN = 2.0                        # 1/s: walk request (mm/s) per mm of position error
 TURN_GAIN = 2.0                        # 1/s: turn request (rad/s) per rad of heading error
 FORWARD_FIRST_DIST = 400.0             # mm: beyond this, face the target and walk forward
 FORWARD_FIRST_LEAVE_DIST = 500.0       # mm: back to forward-first only beyond this
+DIRECT_MARGIN_S = 0.25                 # s: Algorithm 4.3 when this much faster (a tie walks forward) ...
+DIRECT_HYSTERESIS_S = 0.5              # s: ... and kept until forward-first is this much faster
 FACE_TARGET_ANGLE = math.radians(15)   # rad: forward-first walks only when facing this well
 TURN_FIRST_ANGLE = math.radians(15)    # rad: Algorithm 4.3 turns on the spot beyond this
 ARRIVE_DIST = 40.0                     # mm: arrived within this ...
 ARRIVE_ANGLE = 0.1                     # rad: ... and this
 LEAVE_DIST = 150.0                     # mm: arrived until pushed beyond this ...
 LEAVE_ANGLE = 0.35                     # rad: ... or turned beyond this
+
+
+def directTime(toTarget, turnError):
+    """Seconds Algorithm 4.3 needs: turn to the final heading (turnError away), then walk to
+    the target in that heading, at the walk's speed in the target's direction."""
+    direction = toTarget.heading - turnError  # the target's bearing from the final heading
+    forward, left = clampWalk(1e4 * math.cos(direction), 1e4 * math.sin(direction))
+    return abs(turnError) / MAX_TURN + toTarget.distance / math.hypot(forward, left)
+
+
+def forwardFirstTime(toTarget, turnError):
+    """Seconds forward-first needs: face the target, walk forward, turn to the final heading."""
+    turned = abs(toTarget.heading) + abs(robot.normaliseTheta(turnError - toTarget.heading))
+    return turned / MAX_TURN + toTarget.distance / MAX_FORWARD
 
 
 class GoToPose:
@@ -34,7 +52,7 @@ class GoToPose:
         self.setTarget(x, y, theta)
         self.faceBall = faceBall
         self.arrived = False
-        self.near = False  # within FORWARD_FIRST_DIST: running Algorithm 4.3
+        self.near = False  # running Algorithm 4.3: near, or faster than forward-first
         self.avoid = Avoid()
 
     def setTarget(self, x, y, theta):
@@ -49,7 +67,7 @@ class GoToPose:
         self.updateArrived(toTarget.distance, turnError)
         if self.arrived:
             return actioncommand.compose(body=self.avoid.stand(blackboard))
-        self.updateNear(toTarget.distance)
+        self.updateNear(toTarget, turnError)
         if not self.near:
             body = self.forwardFirst(toTarget)
         elif abs(turnError) > TURN_FIRST_ANGLE:
@@ -71,11 +89,13 @@ class GoToPose:
         else:
             self.arrived = distance < ARRIVE_DIST and abs(turnError) < ARRIVE_ANGLE
 
-    def updateNear(self, distance):
+    def updateNear(self, toTarget, turnError):
+        direct = directTime(toTarget, turnError)
+        forwardFirst = forwardFirstTime(toTarget, turnError)
         if self.near:
-            self.near = distance < FORWARD_FIRST_LEAVE_DIST
+            self.near = toTarget.distance < FORWARD_FIRST_LEAVE_DIST or direct < forwardFirst + DIRECT_HYSTERESIS_S
         else:
-            self.near = distance < FORWARD_FIRST_DIST
+            self.near = toTarget.distance < FORWARD_FIRST_DIST or direct + DIRECT_MARGIN_S < forwardFirst
 
     def forwardFirst(self, toTarget):
         """Face the target, then walk straight at it, steering."""

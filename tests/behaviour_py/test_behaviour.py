@@ -51,7 +51,7 @@ def test_keeps_one_skill_instance_across_ticks(monkeypatch):
 def test_go_to_pose_takes_its_parameters(monkeypatch):
     use_params(monkeypatch, skill="GoToPose", x="-2000", y="-100", theta="0")
     command = behaviour.tick(board((0.0, 0.0, 0.0)))
-    assert (command.body.forward, command.body.turn) == pytest.approx((0.0, -1.5))
+    assert (command.body.forward, command.body.turn) == pytest.approx((-200.0, 0.0))  # behind, ending facing +x
     use_params(monkeypatch, skill="GoToPose", x="0", y="0", face_ball="1")  # new params: a new skill
     command = behaviour.tick(board((0.0, 0.0, 0.0), ball=(0.0, 1000.0)))
     assert command.body.turn == pytest.approx(1.5)

@@ -16,13 +16,17 @@ def velocities(command):
     return command.body.forward, command.body.left, command.body.turn
 
 
-def test_target_behind_turns_on_the_spot_first():
-    command = GoToPose(-2000.0, -100.0, 0.0).tick(board((0.0, 0.0, 0.0)))
+def test_target_far_behind_is_walked_backwards_when_the_robot_must_end_facing_away():
+    # Backwards at 200 mm/s: 10 s; turning round, 300 mm/s forward and turning back: 10.9 s.
+    skill = GoToPose(-2000.0, -100.0, 0.0)
+    command = skill.tick(board((0.0, 0.0, 0.0)))
     assert command.body.actionType == WALK
-    assert velocities(command) == pytest.approx((0.0, 0.0, -1.5))
+    assert velocities(command) == pytest.approx((-200.0, -10.0, 0.0))
+    assert skill.near
 
 
 def test_far_target_ahead_walks_forward_at_full_speed_steering():
+    # Ahead, both ways take as long: forward-first (Algorithm 4.3 only when 0.25 s faster).
     command = GoToPose(2000.0, 100.0, 0.0).tick(board((0.0, 0.0, 0.0)))
     assert velocities(command) == pytest.approx((300.0, 0.0, 0.09992), abs=1e-4)
 
@@ -31,10 +35,13 @@ def at(distance, bearing):
     return distance * math.cos(bearing), distance * math.sin(bearing)
 
 
-def test_forward_first_beyond_the_threshold():
-    x, y = at(410.0, math.radians(20))  # 20 degrees off: face it first
-    command = GoToPose(x, y, 0.0).tick(board((0.0, 0.0, 0.0)))
-    assert velocities(command) == pytest.approx((0.0, 0.0, 0.69813), abs=1e-4)
+def test_forward_first_where_it_is_faster():
+    # 2 m at 80 degrees, ending facing +x: sideways 9.9 s; turn, walk forward, turn back 8.5 s.
+    x, y = at(2000.0, math.radians(80))
+    skill = GoToPose(x, y, 0.0)
+    command = skill.tick(board((0.0, 0.0, 0.0)))
+    assert velocities(command) == pytest.approx((0.0, 0.0, 1.5))
+    assert not skill.near
 
 
 def test_algorithm_4_3_within_the_threshold():
@@ -45,15 +52,20 @@ def test_algorithm_4_3_within_the_threshold():
     assert skill.near
 
 
-def test_near_until_beyond_the_leave_distance():
+def test_algorithm_4_3_until_forward_first_is_clearly_faster():
+    # A target to the left, ending facing +x: sideways takes d/200 s, turning twice and forward
+    # 2.09 s + d/300: Algorithm 4.3 is 0.25 s faster under 1107 mm, and kept until 0.5 s slower (1557 mm).
     skill = GoToPose(0.0, 0.0, 0.0)
-    skill.tick(board((-390.0, 0.0, 0.0)))
+    skill.tick(board((0.0, -390.0, 0.0)))
     assert skill.near
-    skill.tick(board((-450.0, -100.0, 0.0)))  # 461 mm: still Algorithm 4.3
+    skill.tick(board((0.0, -1400.0, 0.0)))  # 0.24 s slower: still Algorithm 4.3
     assert skill.near
-    command = skill.tick(board((-500.0, -200.0, 0.0)))  # 539 mm, 22 degrees off: forward-first again
+    command = skill.tick(board((0.0, -1600.0, 0.0)))  # 0.57 s slower: forward-first
     assert not skill.near
     assert command.body.forward == 0.0 and command.body.turn > 0.0
+    fresh = GoToPose(0.0, 0.0, 0.0)
+    fresh.tick(board((0.0, -1400.0, 0.0)))
+    assert not fresh.near
 
 
 def test_algorithm_4_3_worked_example_clamped():

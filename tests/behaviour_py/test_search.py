@@ -84,7 +84,8 @@ def test_the_striker_turns_briefly_then_walks_to_a_search_spot():
     assert walk.actionType == WALK and walk.forward > 0.0 and walk.turn == pytest.approx(0.0)
     assert body(SEARCH_CYCLE_FRAMES + 1).turn == pytest.approx(-SEARCH_TURN_SPEED)  # the next cycle's turn ...
     walk = body(SEARCH_CYCLE_FRAMES + SEARCH_TURN_LIMIT_FRAMES + 1, pos=(1500.0, 0.0, 0.0))  # ... then to (0, 1200)
-    assert walk.actionType == WALK and walk.forward == pytest.approx(0.0) and walk.turn > 0.0
+    # behind-left, the spot faces +x: backwards and left, faster than turning round and back
+    assert walk.actionType == WALK and walk.forward < 0.0 and walk.left > 0.0 and walk.turn == pytest.approx(0.0)
 
 
 def test_a_supporter_goes_home_first_then_searches_from_spot_to_spot():
@@ -97,7 +98,7 @@ def test_a_supporter_goes_home_first_then_searches_from_spot_to_spot():
     assert body(SEARCH_TURN_LIMIT_FRAMES + 1, (0.0, 800.0, 0.0)) is None  # then the thesis stands at home
     assert body(SEARCH_CYCLE_FRAMES + 1, (0.0, 0.0, 0.0)).turn == pytest.approx(SEARCH_TURN_SPEED)  # turns anywhere
     walk = body(SEARCH_CYCLE_FRAMES + SEARCH_TURN_LIMIT_FRAMES + 1, (0.0, 800.0, 0.0))  # to its first spot (0, 1200)
-    assert walk.actionType == WALK and walk.turn > 0.0
+    assert walk.actionType == WALK and walk.left > 0.0 and walk.turn == pytest.approx(0.0)  # sideways, facing +x
 
 
 def test_the_team_searches_but_the_goalie_keeps_its_box():

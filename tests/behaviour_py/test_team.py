@@ -72,9 +72,9 @@ def test_shooting_path_avoidance_in_front_of_the_ball():
 def test_supporters_face_the_ball_and_go_home_when_it_is_lost():
     # Defender at its target, facing the ball: stands.
     assert Defender(THESIS).tick(board((-1250.0, 0.0, 0.0), ball=(0.0, 0.0))).body.actionType == STAND
-    # Ball lost for long: the midfielder walks home to (0, 800) (ahead-left: turns first).
+    # Ball lost for long: the midfielder walks home to (0, 800), to its left: sideways, as it ends facing +x.
     command = Midfielder().tick(board((0.0, 0.0, 0.0), ball=(1000.0, 0.0), seen=False, lost=91))
-    assert command.body.actionType == WALK and command.body.turn == pytest.approx(1.5)
+    assert command.body.actionType == WALK and (command.body.left, command.body.turn) == pytest.approx((200.0, 0.0))
     assert Midfielder().tick(board((0.0, 800.0, 0.0), seen=False, lost=91)).body.actionType == STAND
 
 
@@ -235,6 +235,6 @@ def test_a_lost_ball_makes_the_striker_turn_to_search():
 def test_a_supporter_turns_to_search_only_at_home():
     team = Team(ROLE_DEFENDER)
     command = team.tick(board((0.0, 0.0, 0.0), ball=(0.0, 1000.0), seen=False, lost=SEARCH_TURN_FRAMES + 1))
-    assert command.body.turn == pytest.approx(-1.5)  # walking home to (-1800, 0): behind, turns first
+    assert (command.body.forward, command.body.turn) == pytest.approx((-200.0, 0.0))  # home (-1800, 0): backwards
     command = team.tick(board((-1800.0, 100.0, 0.0), ball=(0.0, 1000.0), seen=False, lost=SEARCH_TURN_FRAMES + 1))
     assert command.body.turn == pytest.approx(SEARCH_TURN_SPEED)

@@ -74,10 +74,11 @@ def test_without_the_own_ball_it_walks_to_the_team_ball_else_the_centre_and_the_
 def test_the_team_unsticks_in_play_only_and_starts_afresh_after_a_penalty():
     team = Team(ROLE_STRIKER)
     frames = STUCK_FRAME - 1
-    for frame in range(frames):  # the ball to the left: the striker turns to it, the odometry says it spins
-        team.tick(spinBoard(frame, ball=(0.0, 1000.0)))
-    team.tick(spinBoard(frames, ball=(0.0, 1000.0), penalised=True))
+    ball = (0.0, 1000.0)  # to the left: the striker turns on the spot to face the goal, the odometry spins
+    for frame in range(frames):
+        team.tick(spinBoard(frame, ball=ball))
+    team.tick(spinBoard(frames, ball=ball, penalised=True))
     for frame in range(frames + 1, frames + 1 + STUCK_FRAME):  # the window starts again
-        assert team.tick(spinBoard(frame, ball=(0.0, 1000.0))).body.turn > 0.0
-    body = team.tick(spinBoard(frames + 1 + STUCK_FRAME, ball=(0.0, 1000.0))).body
+        assert team.tick(spinBoard(frame, ball=ball)).body.turn < 0.0
+    body = team.tick(spinBoard(frames + 1 + STUCK_FRAME, ball=ball)).body
     assert (body.turn, body.left) == (0.0, pytest.approx(200.0))  # stuck in play: sideways to the ball

@@ -25,7 +25,7 @@ ActionCommand::All GoToPose::tick(const Blackboard& blackboard) {
   const float error = turnError(blackboard, pos);
   updateArrived(toTarget.distance, error);
   if (arrived_) return actioncommand::compose({}, avoid_.stand(blackboard));
-  updateNear(toTarget.distance);
+  updateNear(toTarget, error);
   ActionCommand::Body body;
   if (!near_) {
     body = forwardFirst(toTarget);
@@ -53,11 +53,31 @@ void GoToPose::updateArrived(float distance, float error) {
   }
 }
 
-void GoToPose::updateNear(float distance) {
+namespace {
+
+/// Seconds Algorithm 4.3 needs: turn to the final heading (`error` away), then walk to the
+/// target in that heading, at the walk's speed in the target's direction.
+float directTime(const RRCoord& toTarget, float error) {
+  const float direction = toTarget.heading - error; // the target's bearing from the final heading
+  const WalkVelocity v = clampWalk(1e4f * std::cos(direction), 1e4f * std::sin(direction));
+  return std::fabs(error) / MAX_TURN + toTarget.distance / std::hypot(v.forward, v.left);
+}
+
+/// Seconds forward-first needs: face the target, walk forward, turn to the final heading.
+float forwardFirstTime(const RRCoord& toTarget, float error) {
+  const float turned = std::fabs(toTarget.heading) + std::fabs(normaliseTheta(error - toTarget.heading));
+  return turned / MAX_TURN + toTarget.distance / MAX_FORWARD;
+}
+
+} // namespace
+
+void GoToPose::updateNear(const RRCoord& toTarget, float error) {
+  const float direct_s = directTime(toTarget, error);
+  const float forward_first_s = forwardFirstTime(toTarget, error);
   if (near_) {
-    near_ = distance < FORWARD_FIRST_LEAVE_DIST;
+    near_ = toTarget.distance < FORWARD_FIRST_LEAVE_DIST || direct_s < forward_first_s + DIRECT_HYSTERESIS_S;
   } else {
-    near_ = distance < FORWARD_FIRST_DIST;
+    near_ = toTarget.distance < FORWARD_FIRST_DIST || direct_s + DIRECT_MARGIN_S < forward_first_s;
   }
 }
 

@@ -23,19 +23,26 @@ AbsCoord at(float distance, float bearing) { return {distance * std::cos(bearing
 
 } // namespace
 
-TEST(GoToPoseSkill, TargetBehindTurnsOnTheSpotFirst) {
-  const auto command = GoToPose(-2000.f, -100.f, 0.f).tick(board({0, 0, 0}));
+TEST(GoToPoseSkill, TargetFarBehindIsWalkedBackwardsWhenTheRobotMustEndFacingAway) {
+  // Backwards at 200 mm/s: 10 s; turning round, 300 mm/s forward and turning back: 10.9 s.
+  GoToPose skill(-2000.f, -100.f, 0.f);
+  const auto command = skill.tick(board({0, 0, 0}));
   EXPECT_EQ(command.body.actionType, ActionCommand::ActionType::WALK);
-  expectVelocities(command, 0.f, 0.f, -1.5f);
+  expectVelocities(command, -200.f, -10.f, 0.f);
+  EXPECT_TRUE(skill.near());
 }
 
 TEST(GoToPoseSkill, FarTargetAheadWalksForwardAtFullSpeedSteering) {
+  // Ahead, both ways take as long: forward-first (Algorithm 4.3 only when 0.25 s faster).
   expectVelocities(GoToPose(2000.f, 100.f, 0.f).tick(board({0, 0, 0})), 300.f, 0.f, 0.09992f, 1e-4f);
 }
 
-TEST(GoToPoseSkill, ForwardFirstBeyondTheThreshold) {
-  const AbsCoord target = at(410.f, radians(20)); // 20 degrees off: face it first
-  expectVelocities(GoToPose(target.x, target.y, 0.f).tick(board({0, 0, 0})), 0.f, 0.f, 0.69813f, 1e-4f);
+TEST(GoToPoseSkill, ForwardFirstWhereItIsFaster) {
+  // 2 m at 80 degrees, ending facing +x: sideways 9.9 s; turn, walk forward, turn back 8.5 s.
+  const AbsCoord target = at(2000.f, radians(80));
+  GoToPose skill(target.x, target.y, 0.f);
+  expectVelocities(skill.tick(board({0, 0, 0})), 0.f, 0.f, 1.5f);
+  EXPECT_FALSE(skill.near());
 }
 
 TEST(GoToPoseSkill, Algorithm43WithinTheThreshold) {
@@ -45,16 +52,21 @@ TEST(GoToPoseSkill, Algorithm43WithinTheThreshold) {
   EXPECT_TRUE(skill.near());
 }
 
-TEST(GoToPoseSkill, NearUntilBeyondTheLeaveDistance) {
+TEST(GoToPoseSkill, Algorithm43UntilForwardFirstIsClearlyFaster) {
+  // A target to the left, ending facing +x: sideways takes d/200 s, turning twice and forward
+  // 2.09 s + d/300: Algorithm 4.3 is 0.25 s faster under 1107 mm, and kept until 0.5 s slower (1557 mm).
   GoToPose skill(0.f, 0.f, 0.f);
-  skill.tick(board({-390.f, 0.f, 0.f}));
+  skill.tick(board({0.f, -390.f, 0.f}));
   EXPECT_TRUE(skill.near());
-  skill.tick(board({-450.f, -100.f, 0.f})); // 461 mm: still Algorithm 4.3
+  skill.tick(board({0.f, -1400.f, 0.f})); // 0.24 s slower: still Algorithm 4.3
   EXPECT_TRUE(skill.near());
-  const auto command = skill.tick(board({-500.f, -200.f, 0.f})); // 539 mm, 22 degrees off: forward-first again
+  const auto command = skill.tick(board({0.f, -1600.f, 0.f})); // 0.57 s slower: forward-first
   EXPECT_FALSE(skill.near());
   EXPECT_EQ(command.body.forward, 0.f);
   EXPECT_GT(command.body.turn, 0.f);
+  GoToPose fresh(0.f, 0.f, 0.f);
+  fresh.tick(board({0.f, -1400.f, 0.f}));
+  EXPECT_FALSE(fresh.near());
 }
 
 TEST(GoToPoseSkill, Algorithm43WorkedExampleClamped) {

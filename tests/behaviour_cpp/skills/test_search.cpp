@@ -107,9 +107,11 @@ TEST(Search, TheStrikerTurnsBrieflyThenWalksToASearchSpot) {
   EXPECT_NEAR(walk.turn, 0.f, 1e-6f);
   EXPECT_NEAR(body(SEARCH_CYCLE_FRAMES + 1).turn, -SEARCH_TURN_SPEED, 1e-6f); // the next cycle's turn ...
   walk = body(SEARCH_CYCLE_FRAMES + SEARCH_TURN_LIMIT_FRAMES + 1, {1500.f, 0.f, 0.f}); // ... then to (0, 1200)
+  // behind-left, the spot faces +x: backwards and left, faster than turning round and back
   EXPECT_EQ(walk.actionType, AT::WALK);
-  EXPECT_NEAR(walk.forward, 0.f, 1e-6f);
-  EXPECT_GT(walk.turn, 0.f);
+  EXPECT_LT(walk.forward, 0.f);
+  EXPECT_GT(walk.left, 0.f);
+  EXPECT_NEAR(walk.turn, 0.f, 1e-6f);
 }
 
 TEST(Search, ASupporterGoesHomeFirstThenSearchesFromSpotToSpot) {
@@ -127,7 +129,8 @@ TEST(Search, ASupporterGoesHomeFirstThenSearchesFromSpotToSpot) {
   const auto walk = body(SEARCH_CYCLE_FRAMES + SEARCH_TURN_LIMIT_FRAMES + 1, {0.f, 800.f, 0.f}); // to (0, 1200)
   ASSERT_TRUE(walk);
   EXPECT_EQ(walk->actionType, AT::WALK);
-  EXPECT_GT(walk->turn, 0.f);
+  EXPECT_GT(walk->left, 0.f); // sideways, facing +x
+  EXPECT_NEAR(walk->turn, 0.f, 1e-6f);
 }
 
 TEST(Search, TheTeamSearchesButTheGoalieKeepsItsBox) {

@@ -43,8 +43,8 @@ TEST(SkillBehaviour, KeepsItsSkillStateAcrossTicks) {
 
 TEST(SkillBehaviour, GoToPoseTakesItsParameters) {
   auto command = make_behaviour("GoToPose", {{"x", "-2000"}, {"y", "-100"}, {"theta", "0"}})->tick(board({0, 0, 0}));
-  EXPECT_NEAR(command.body.forward, 0.f, 1e-5f);
-  EXPECT_NEAR(command.body.turn, -1.5f, 1e-5f);
+  EXPECT_NEAR(command.body.forward, -200.f, 1e-3f); // behind, ending facing +x
+  EXPECT_NEAR(command.body.turn, 0.f, 1e-5f);
   command = make_behaviour("GoToPose", {{"x", "0"}, {"y", "0"}, {"face_ball", "1"}})->tick(board({0, 0, 0}, 0.f, 1000.f));
   EXPECT_NEAR(command.body.turn, 1.5f, 1e-5f);
 }

@@ -68,9 +68,11 @@ TEST(TeamSupporter, ShootingPathAvoidanceInFrontOfTheBall) {
 
 TEST(TeamSupporter, FaceTheBallAndGoHomeWhenItIsLost) {
   EXPECT_EQ(Defender(thesisSupporters()).tick(board({-1250.f, 0.f, 0.f}, 0.f, 0.f)).body.actionType, AT::STAND);
+  // Ball lost for long: the midfielder walks home to (0, 800), to its left: sideways, as it ends facing +x.
   const auto command = Midfielder().tick(board({0.f, 0.f, 0.f}, 1000.f, 0.f, false, 91));
   EXPECT_EQ(command.body.actionType, AT::WALK);
-  EXPECT_NEAR(command.body.turn, 1.5f, 1e-5f);
+  EXPECT_NEAR(command.body.left, 200.f, 1e-3f);
+  EXPECT_NEAR(command.body.turn, 0.f, 1e-5f);
   EXPECT_EQ(Midfielder().tick(board({0.f, 800.f, 0.f}, 1000.f, 0.f, false, 91)).body.actionType, AT::STAND);
 }
 
@@ -249,7 +251,8 @@ TEST(TeamBehaviour, ALostBallMakesTheStrikerTurnToSearch) {
 TEST(TeamBehaviour, ASupporterTurnsToSearchOnlyAtHome) {
   Team team(ROLE_DEFENDER);
   auto command = team.tick(teamBoard({0.f, 0.f, 0.f}, 0.f, 1000.f, false, SEARCH_TURN_FRAMES + 1));
-  EXPECT_NEAR(command.body.turn, -1.5f, 1e-5f); // walking home to (-1800, 0): behind, turns first
+  EXPECT_NEAR(command.body.forward, -200.f, 1e-3f); // home (-1800, 0): backwards
+  EXPECT_NEAR(command.body.turn, 0.f, 1e-5f);
   command = team.tick(teamBoard({-1800.f, 100.f, 0.f}, 0.f, 1000.f, false, SEARCH_TURN_FRAMES + 1));
   EXPECT_NEAR(command.body.turn, SEARCH_TURN_SPEED, 1e-6f);
 }

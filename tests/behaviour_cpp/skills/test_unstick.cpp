@@ -133,7 +133,7 @@ TEST(Unstick, WithoutTheOwnBallItWalksToTheTeamBallElseTheCentreAndTheGoalieHome
 
 TEST(Unstick, TheTeamUnsticksInPlayOnlyAndStartsAfreshAfterAPenalty) {
   Team team(ROLE_STRIKER);
-  const Spin left = spinWith([](Spin& s) { // the ball to the left: the striker turns to it
+  const Spin left = spinWith([](Spin& s) { // to the left: the striker turns on the spot to face the goal
     s.ballX = 0.f;
     s.ballY = 1000.f;
   });
@@ -141,7 +141,7 @@ TEST(Unstick, TheTeamUnsticksInPlayOnlyAndStartsAfreshAfterAPenalty) {
   for (int frame = 0; frame < frames; ++frame) team.tick(spinBoard(frame, left));
   team.tick(spinBoard(frames, left, true));
   for (int frame = frames + 1; frame < frames + 1 + STUCK_FRAME; ++frame) // the window starts again
-    EXPECT_GT(team.tick(spinBoard(frame, left)).body.turn, 0.f) << frame;
+    EXPECT_LT(team.tick(spinBoard(frame, left)).body.turn, 0.f) << frame;
   const ActionCommand::Body body = team.tick(spinBoard(frames + 1 + STUCK_FRAME, left)).body;
   EXPECT_EQ(body.turn, 0.f); // stuck in play: sideways to the ball
   EXPECT_NEAR(body.left, 200.f, 1e-3f);

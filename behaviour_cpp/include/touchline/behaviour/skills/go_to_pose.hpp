@@ -3,9 +3,11 @@
 // of behaviour_py/skills/go_to_pose.py.
 //
 // Far from the target the robot turns to face it and walks forward (it walks faster forward
-// than sideways); within FORWARD_FIRST_DIST it runs Algorithm 4.3: turn on the spot while the
-// heading is off by more than TURN_FIRST_ANGLE, else walk the forward/left decomposition of
-// the target while turning to the target heading. Arrived (with hysteresis): stand, making
+// than sideways); within FORWARD_FIRST_DIST, or wherever that is faster (a target behind a
+// robot that must end facing the other way: a defender falling back, facing the ball), it runs
+// Algorithm 4.3: turn on the spot while the heading is off by more than TURN_FIRST_ANGLE, else
+// walk the forward/left decomposition of the target while turning to the target heading.
+// Which is faster is estimated from the walk's limits (directTime, forwardFirstTime). Arrived (with hysteresis): stand, making
 // way for a robot ahead. Every walk goes through Avoid (avoid.hpp): around robots, out of the
 // own goal box, backing off when blocked.
 #include "touchline/behaviour/skills/avoid.hpp"
@@ -17,6 +19,8 @@ inline constexpr float WALK_GAIN = 2.f;                      ///< 1/s: walk requ
 inline constexpr float TURN_GAIN = 2.f;                      ///< 1/s: turn request (rad/s) per rad of heading error
 inline constexpr float FORWARD_FIRST_DIST = 400.f;           ///< mm: beyond this, face the target and walk forward
 inline constexpr float FORWARD_FIRST_LEAVE_DIST = 500.f;     ///< mm: back to forward-first only beyond this
+inline constexpr float DIRECT_MARGIN_S = 0.25f;              ///< s: Algorithm 4.3 when this much faster (a tie walks forward) ...
+inline constexpr float DIRECT_HYSTERESIS_S = 0.5f;           ///< s: ... and kept until forward-first is this much faster
 inline constexpr float FACE_TARGET_ANGLE = 15.f * api::kPi / 180.f; ///< rad: forward-first walks only when facing this well
 inline constexpr float TURN_FIRST_ANGLE = 15.f * api::kPi / 180.f;  ///< rad: Algorithm 4.3 turns on the spot beyond this
 inline constexpr float ARRIVE_DIST = 40.f;                   ///< mm: arrived within this ...
@@ -39,7 +43,7 @@ class GoToPose : public api::Behaviour {
   /// How far (rad, + left) the robot must turn to have its final heading.
   float turnError(const api::Blackboard& blackboard, const api::AbsCoord& pos) const;
   void updateArrived(float distance, float turnError);
-  void updateNear(float distance);
+  void updateNear(const api::RRCoord& toTarget, float turnError);
   /// Face the target, then walk straight at it, steering.
   api::ActionCommand::Body forwardFirst(const api::RRCoord& toTarget) const;
   /// Thesis Algorithm 4.3: the target in the robot frame (runswift angles), walked at
@@ -49,7 +53,7 @@ class GoToPose : public api::Behaviour {
   float x_ = 0, y_ = 0, theta_ = 0;
   bool faceBall_ = false;
   bool arrived_ = false;
-  bool near_ = false; ///< within FORWARD_FIRST_DIST: running Algorithm 4.3
+  bool near_ = false; ///< running Algorithm 4.3: near, or faster than forward-first
   Avoid avoid_;
 };
 
