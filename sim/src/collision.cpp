@@ -59,6 +59,12 @@ float speed_towards(const Pose2D& from, const BodyVelocity& v, const Pose2D& to)
   return (v.x_mm_s * dx + v.y_mm_s * dy) / d;
 }
 
+bool steps_towards(const Pose2D& body, const TickMotion& motion, const Pose2D& to) {
+  const float dx = (motion.left.dx_mm + motion.right.dx_mm) / 2, dy = (motion.left.dy_mm + motion.right.dy_mm) / 2;
+  const float c = std::cos(body.theta_rad), s = std::sin(body.theta_rad);
+  return speed_towards(body, BodyVelocity{c * dx - s * dy, s * dx + c * dy}, to) > 0.f;
+}
+
 int walking_pusher(const CollisionVerdict& verdict, const Pose2D& a, const BodyVelocity& va, const Pose2D& b,
                    const BodyVelocity& vb, float walking_into_mm_s) {
   if (verdict.kind != Collision::kPushing) return -1;

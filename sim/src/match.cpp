@@ -176,10 +176,19 @@ void Match::time_out(RobotId id) {
 }
 
 bool Match::may_move(RobotId id, const OnField& robot) const {
-  if (fallen(robot) || robot.stopped) return false;
+  if (fallen(robot)) return false;
   if (external_game_)
     return !penalised(id) && (external_game_->state == GameState::kReady || external_game_->state == GameState::kPlaying);
   return !referee_ || referee_->may_move(id);
+}
+
+bool Match::steps_towards_winner(const OnField& robot, const TickMotion& motion) const {
+  const Pose2D body = world_.robot(robot.world_index).body;
+  for (RobotId winner : robot.stopped_by)
+    if (auto it = on_field_.find(winner); it != on_field_.end() &&
+                                          steps_towards(body, motion, world_.robot(it->second.world_index).body))
+      return true;
+  return false;
 }
 
 void Match::advance() {
@@ -189,7 +198,8 @@ void Match::advance() {
       TickMotion& motion = motions[static_cast<size_t>(robot.world_index)];
       motion = {};
       if (robot.pending.empty()) continue;
-      if (may_move(id, robot)) motion = robot.pending.front(); // else the robot's motion is lost
+      if (may_move(id, robot) && !steps_towards_winner(robot, robot.pending.front()))
+        motion = robot.pending.front(); // else the robot's motion is lost
       robot.pending.pop_front();
     }
     world_.step(motions);
@@ -204,7 +214,7 @@ void Match::advance() {
 }
 
 void Match::judge() {
-  for (auto& [id, robot] : on_field_) robot.stopped = false;
+  for (auto& [id, robot] : on_field_) robot.stopped_by.clear();
   const std::array<bool, 2> touched = std::exchange(touched_by_team_, {{false, false}});
   if (!referee_) return;
   RefereeInput input;
@@ -253,8 +263,8 @@ void Match::carry_out(const RefereeDecision& d) {
                        std::string("game stuck (") + (d.game_stuck->ball_untouched ? "ball untouched" : "ball wedged") +
                            " for " + format_number(config_.rules.game_stuck_s) + " s), kick-off for team " +
                            std::to_string(d.game_stuck->kickoff_team)});
-  for (RobotId id : d.stopped)
-    if (auto robot = on_field_.find(id); robot != on_field_.end()) robot->second.stopped = true;
+  for (const ContestStop& stop : d.stopped)
+    if (auto robot = on_field_.find(stop.robot); robot != on_field_.end()) robot->second.stopped_by.push_back(stop.winner);
 }
 
 void Match::fall_after_push(RobotId pusher) {

@@ -82,8 +82,8 @@ int Referee::judge_walking_into(int64_t now, const RobotOnField& a, const RobotO
   return walking_pusher(v, a.body, velocity_of(a, now, d), b.body, velocity_of(b, now, d), rules_.pushing_speed_mm_s);
 }
 
-// Thesis 2.2.4 for every pair of robots on the field. Contesting the ball is no foul: the
-// robot farther from it is reported stopped. Pushing an opponent is penalised, the pusher
+// Thesis 2.2.4 for every pair of robots on the field. Contesting the ball is no foul: of
+// two opponents, the robot farther from it is reported stopped (by the nearer). Pushing an opponent is penalised, the pusher
 // taken off (rules.pushing_model: the robot the thesis names, or the one walking into the
 // other); the pair then gives no other pushing penalty for pushing_cooldown_s, so one
 // collision gives one penalty even if the match moves robots a frame late or contact
@@ -114,9 +114,10 @@ void Referee::check_collisions(int64_t now, const BallTruth& ball, const Robots&
       const CollisionVerdict v = judge_collision(rules_.collision, a.body, b.body, ball.x_mm, ball.y_mm);
       if (v.kind == Collision::kNone) continue;
       if (v.kind == Collision::kContesting) {
-        const RobotId stopped = v.stopped == 0 ? a.id : b.id;
-        if (std::find(d.stopped.begin(), d.stopped.end(), stopped) == d.stopped.end())
-          d.stopped.push_back(stopped);
+        // Only opponents contest the ball: teammates share it out by role, and a teammate's
+        // held feet walled the ball in against the contest's winner (a scrum until game stuck).
+        if (a.id.team != b.id.team)
+          d.stopped.push_back(v.stopped == 0 ? ContestStop{a.id, b.id} : ContestStop{b.id, a.id});
         continue;
       }
       if (a.id.team == b.id.team || !rules_.pushing) continue;

@@ -34,6 +34,22 @@ TEST(Collision, ContestingTheBallTheNearerGoesOnTheOtherIsStopped) {
   EXPECT_EQ(v.stopped, 0);
 }
 
+TEST(Collision, StepsTowardsTellsAStepIntoTheOtherFromOneAwayOrAside) {
+  const Pose2D loser{0, 0, kPi / 2}, winner{0, 250, -kPi / 2}; // facing each other along +y
+  const auto tick = [](float dx_mm, float dy_mm) {
+    TickMotion m;
+    m.left = m.right = {dx_mm, dy_mm, 0};
+    return m;
+  };
+  EXPECT_TRUE(sim::steps_towards(loser, tick(5, 0), winner));   // forward: into it
+  EXPECT_FALSE(sim::steps_towards(loser, tick(-5, 0), winner)); // backwards: away
+  EXPECT_FALSE(sim::steps_towards(loser, tick(0, 5), winner));  // sideways: square to it
+  EXPECT_FALSE(sim::steps_towards(loser, tick(0, 0), winner));  // standing or turning
+  TickMotion kick; // one foot swinging forward moves the body forward: into it
+  kick.right = {12, 0, 0};
+  EXPECT_TRUE(sim::steps_towards(loser, kick, winner));
+}
+
 TEST(Collision, SameWayAwayFromTheBallTheRobotBehindIsPenalised) {
   const auto v = sim::judge_collision({}, {1000, 0, 0}, {800, 50, 0.1f}, -2000, 0);
   EXPECT_EQ(v.kind, Collision::kPushing);

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "touchline/angles.hpp"
+
 using namespace touchline;
 using sim::ActOutcome;
 
@@ -391,6 +393,33 @@ TEST(Match, PushingIsPenalisedAndThePushedRobotFallsThenGetsUp) {
   match.apply(forward_act({0, 1}, match.frame(), ticks_in_frame(match.frame()), 5.f), 1);
   match.advance();
   EXPECT_GT(match.truth().robots[0].truth.body.x_mm, lying.x_mm);
+}
+
+TEST(Match, ARobotThatLostABallContestMayStepAwayButNotTowardsTheWinner) {
+  sim::WorldConfig config;
+  config.match.team_size = 1;
+  config.rules.initial_s = config.rules.ready_s = config.rules.set_s = 0; // straight to PLAYING
+  config.rules.manual_placement = false;
+  config.rules.game_stuck_s = 0;
+  sim::Match match(config);
+  match.join({0, 1}, 1, 0);
+  match.join({1, 1}, 2, 0);
+  match.start();
+  match.advance();
+  ASSERT_EQ(match.game().state, GameState::kPlaying);
+  // Facing each other over the ball, team 0's robot nearer it: team 1's lost the contest.
+  match.world().place_ball(-20, 0);
+  match.world().place_robot(0, {-100, 0, 0});
+  match.world().place_robot(1, {150, 0, kPi});
+  match.advance();
+  const auto x_of_loser = [&] { return match.truth().robots[1].truth.body.x_mm; };
+  const float before = x_of_loser();
+  match.apply(forward_act({1, 1}, match.frame(), ticks_in_frame(match.frame()), 2.f), 2); // towards the winner
+  match.advance();
+  EXPECT_FLOAT_EQ(x_of_loser(), before);
+  match.apply(forward_act({1, 1}, match.frame(), ticks_in_frame(match.frame()), -2.f), 2); // backwards, away
+  match.advance();
+  EXPECT_GT(x_of_loser(), before + 5.f);
 }
 
 namespace {

@@ -290,7 +290,18 @@ TEST_F(RefereeTest, ContestingTheBallIsNoFoulAndStopsTheRobotFartherFromIt) {
   const auto d = update_at(60);
   EXPECT_TRUE(d.penalties.empty());
   ASSERT_EQ(d.stopped.size(), 1u);
-  EXPECT_EQ(d.stopped[0], kBlue2);
+  EXPECT_EQ(d.stopped[0].robot, kBlue2);
+  EXPECT_EQ(d.stopped[0].winner, kRed2);
+}
+
+TEST_F(RefereeTest, TeammatesDoNotContestTheBall) {
+  put_ball(-20.f, 0.f); // as above, but both robots are red: their feet collide, neither is held
+  put_robot(kRed2, -100.f, 0.f, 0.f);
+  put_robot(kRed3, 100.f, 0.f, kPi);
+  start_playing();
+  const auto d = update_at(60);
+  EXPECT_TRUE(d.penalties.empty());
+  EXPECT_TRUE(d.stopped.empty());
 }
 
 TEST_F(RefereeTest, FacingEachOtherAwayFromTheBallTheSquarerWalkerPushes) {

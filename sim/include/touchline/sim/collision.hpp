@@ -49,6 +49,11 @@ struct BodyVelocity {
 /// + walking into it, - moving away, 0 standing or passing square to it.
 float speed_towards(const Pose2D& from, const BodyVelocity& v, const Pose2D& to);
 
+/// Whether one tick of `motion` (body frame) moves a robot at `body` towards `to`: the feet's
+/// mean step has a component along the line to it. A robot that lost a ball contest may
+/// not (the thesis' stop), but may step away or aside, so the loser can leave the scrum.
+bool steps_towards(const Pose2D& body, const TickMotion& motion, const Pose2D& to);
+
 /// The SPL's reading of a kPushing verdict (rules.pushing_model = walking_into): the robot
 /// that walks into an opponent pushes it; one that stands or backs away does not. Of the
 /// pusher the thesis named and the other robot, the first whose speed towards the other

@@ -119,11 +119,13 @@ class Match {
     int32_t chest_led = 0; ///< 0xRRGGBB, from the robot's latest answer
     std::deque<TickMotion> pending; ///< motions not yet stepped, oldest first
     int64_t fallen_until_utime = -1; ///< lying on the ground until then
-    bool stopped = false;            ///< lost a ball contest this frame: its feet hold
+    std::vector<RobotId> stopped_by; ///< lost ball contests this frame to these: no step towards them
     bool placed = false;             ///< put down by the referee since the last sense
   };
   void place(RobotId id);
   bool may_move(RobotId id, const OnField& robot) const;
+  /// Whether `motion` steps `robot` towards a robot it lost a ball contest to this frame.
+  bool steps_towards_winner(const OnField& robot, const TickMotion& motion) const;
   bool fallen(const OnField& robot) const { return robot.fallen_until_utime > utime(); }
   bool penalised(RobotId id) const;
   void judge();

@@ -126,6 +126,11 @@ struct SetPlayChange {
 
 /// What one update decided, in the order it happened. Placements are in the order to
 /// apply them (a robot may appear twice: the later wins).
+struct ContestStop {
+  RobotId robot;  ///< lost a ball contest: may not step towards ...
+  RobotId winner; ///< ... this robot, nearer the ball
+};
+
 struct RefereeDecision {
   std::vector<StateChange> state_changes;
   std::vector<GoalScored> goals;
@@ -135,9 +140,9 @@ struct RefereeDecision {
   std::optional<BallPlacement> ball;
   std::vector<SetPlayChange> set_plays;    ///< set plays begun and ended, in order
   std::optional<GameStuck> game_stuck;     ///< the game was stuck; a kick-off follows (state_changes)
-  /// Contesting the ball, in contact with an opponent nearer it: the thesis' heuristic
-  /// stops this robot's feet (2.2.4); the match may hold its motions for the frame.
-  std::vector<RobotId> stopped;
+  /// Contesting the ball, in contact with an opponent nearer it (the winner): the thesis'
+  /// heuristic stops the loser (2.2.4); the match holds its steps towards the winner for the frame.
+  std::vector<ContestStop> stopped;
   bool empty() const;
 };
 
