@@ -241,6 +241,9 @@ void PythonBehaviour::check_params() {
     throw PythonBehaviourError(message.empty() ? "Python module '" + def_.module + "': check_params() raised " +
                                                      std::string(py::str(e.type().attr("__name__")))
                                                : message);
+  } catch (const std::runtime_error& e) { // the tick guard could not be set up
+    leave();
+    throw PythonBehaviourError(std::string("cannot check the Python behaviour's parameters: ") + e.what());
   }
 }
 
