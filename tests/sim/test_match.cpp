@@ -348,11 +348,21 @@ TEST(Match, TeamMessagesReachTeammatesThroughTheRadio) {
   EXPECT_EQ(got[0].data, (std::vector<uint8_t>{1, 2, 3}));
 }
 
-TEST(Match, PushingIsPenalisedAndThePushedRobotFallsThenGetsUp) {
+namespace {
+
+/// One robot a team, straight to PLAYING, where the test puts them (no manual placement).
+sim::WorldConfig one_a_side_playing() {
   sim::WorldConfig config;
   config.match.team_size = 1;
-  config.rules.initial_s = config.rules.ready_s = config.rules.set_s = 0; // straight to PLAYING
+  config.rules.initial_s = config.rules.ready_s = config.rules.set_s = 0;
   config.rules.manual_placement = false;
+  return config;
+}
+
+} // namespace
+
+TEST(Match, PushingIsPenalisedAndThePushedRobotFallsThenGetsUp) {
+  sim::WorldConfig config = one_a_side_playing();
   config.rules.fall_probability = 1;
   config.rules.getup_s = 2;
   config.match.ball_start_x_mm = 2500; // far from both: not contesting it
@@ -396,10 +406,7 @@ TEST(Match, PushingIsPenalisedAndThePushedRobotFallsThenGetsUp) {
 }
 
 TEST(Match, ARobotThatLostABallContestMayStepAwayButNotTowardsTheWinner) {
-  sim::WorldConfig config;
-  config.match.team_size = 1;
-  config.rules.initial_s = config.rules.ready_s = config.rules.set_s = 0; // straight to PLAYING
-  config.rules.manual_placement = false;
+  sim::WorldConfig config = one_a_side_playing();
   config.rules.game_stuck_s = 0;
   sim::Match match(config);
   match.join({0, 1}, 1, 0);
