@@ -4,7 +4,10 @@ the goal with small steps, and kick (or dribble) once aligned.
 The foot is chosen on the ball's side when lining up starts and kept until it ends. The aim
 may be off by KICK_FAR_ANGLE_TOLERANCE while the goal is far; while a robot (avoid.py's
 obstacles) is within CONTEST_DIST of the ball, the robot kicks at once wherever the kick gains
-ground (CONTEST_* tolerances) instead of lining up slowly under its feet.
+ground (CONTEST_* tolerances) instead of lining up slowly under its feet. A contest in which
+the ball has not moved STALL_BALL_MOVE for STALL_FRAMES (kicks into an opponent's feet, the
+ball wedged) makes the robot step sideways round the ball, away from the nearest robot, for
+SIDESTEP_FRAMES, so the next kick has a clear line.
 """
 import math
 
@@ -28,6 +31,9 @@ CONTEST_DIST = 500.0                       # mm: an obstacle this near the ball 
 CONTEST_ANGLE_TOLERANCE = 1.2              # rad: ... kick this far off the goal ...
 CONTEST_X_TOLERANCE = 80.0                 # mm: ... with the ball this far off the kicking spot ...
 CONTEST_Y_TOLERANCE = 70.0                 # mm: ... and the foot's line (the swing still meets it)
+STALL_FRAMES = 60                          # frames (2 s) contested without the ball moving ...
+STALL_BALL_MOVE = 100.0                    # mm: ... this far: then ...
+SIDESTEP_FRAMES = 30                       # frames (1 s) of stepping sideways round the ball
 LINE_UP_ENTER_DIST = 300.0                 # mm: start lining up when the ball is this close ...
 LINE_UP_ENTER_ANGLE = 0.6                  # rad: ... ahead, and the goal this well in line
 LINE_UP_LEAVE_DIST = 500.0                 # mm: back to approaching beyond this ...
@@ -55,6 +61,10 @@ class LineUpAndKick:
         self.seen = []  # the robots the camera saw (avoid.remember)
         self.contested = False
         self.aimTolerance = KICK_ANGLE_TOLERANCE  # this tick's: normal, far or contested
+        self.stalledFrames = 0  # contested frames without the ball moving STALL_BALL_MOVE from stallBall
+        self.stallBall = (0.0, 0.0)
+        self.sidestepFrames = 0  # sidestep frames left, at sidestepLeft mm/s
+        self.sidestepLeft = 0.0
 
     def tick(self, blackboard):
         if not ballRecentlySeen(blackboard):
@@ -65,14 +75,33 @@ class LineUpAndKick:
         ballRR = robot.toRobotRelative(pos, ball.x, ball.y)
         aimError = robot.normaliseTheta(math.atan2(self.goalY - ball.y, self.goalX - ball.x) - pos.theta)
         self.seen = remember(self.seen, blackboard)
-        self.contested = any(math.hypot(x - ballRR.x(), y - ballRR.y()) < CONTEST_DIST
-                             for x, y in obstacles(blackboard, self.seen))
+        self.contested = False
+        nearest, nearestY = CONTEST_DIST, 0.0
+        for x, y in obstacles(blackboard, self.seen):
+            dist = math.hypot(x - ballRR.x(), y - ballRR.y())
+            self.contested = self.contested or dist < CONTEST_DIST
+            if dist < nearest:
+                nearest, nearestY = dist, y
         far = math.hypot(self.goalX - ball.x, self.goalY - ball.y) > KICK_FAR_DIST
         self.aimTolerance = (CONTEST_ANGLE_TOLERANCE if self.contested
                              else KICK_FAR_ANGLE_TOLERANCE if far else KICK_ANGLE_TOLERANCE)
         self.updateLiningUp(ballRR, aimError)
         if not self.liningUp:
+            self.stalledFrames = self.sidestepFrames = 0
             return self.goToBall.tick(blackboard)
+        if self.sidestepFrames > 0:  # a stalled contest: step round the ball for a clear kick
+            self.sidestepFrames -= 1
+            turn = clamp(TURN_GAIN * ballRR.heading, -LINE_UP_MAX_TURN, LINE_UP_MAX_TURN)
+            return actioncommand.compose(body=actioncommand.walk(0.0, self.sidestepLeft, turn))
+        if self.contested and math.hypot(ball.x - self.stallBall[0], ball.y - self.stallBall[1]) < STALL_BALL_MOVE:
+            self.stalledFrames += 1
+            if self.stalledFrames >= STALL_FRAMES:
+                self.stalledFrames = 0
+                self.sidestepFrames = SIDESTEP_FRAMES
+                self.sidestepLeft = -LINE_UP_MAX_SPEED if nearestY > ballRR.y() else LINE_UP_MAX_SPEED
+        else:
+            self.stalledFrames = 0
+            self.stallBall = (ball.x, ball.y)
         return actioncommand.compose(body=self.lineUp(ballRR, aimError))
 
     def updateLiningUp(self, ballRR, aimError):

@@ -6,7 +6,7 @@ from boards import board, relative, seenRobot
 
 from skills.ball import BALL_LOST_FRAMES
 from skills.go_to_ball import GoToBall
-from skills.line_up_and_kick import LineUpAndKick
+from skills.line_up_and_kick import SIDESTEP_FRAMES, STALL_FRAMES, LineUpAndKick
 
 ORIGIN = (0.0, 0.0, 0.0)
 KICK = robot.ActionType.KICK
@@ -62,6 +62,24 @@ def test_a_contested_ball_is_kicked_at_once_wherever_it_gains_ground():
     body = contested.tick(contest_board(robots=[seenRobot(450.0, 120.0)])).body  # across the ball
     assert contested.contested
     assert (body.actionType, body.foot) == (KICK, robot.Foot.LEFT)
+
+
+def test_a_stalled_contest_steps_round_the_ball_away_from_the_robot_then_kicks_again():
+    skill = LineUpAndKick()
+    contested = contest_board(robots=[seenRobot(450.0, 120.0)])  # left of the ball: step right
+    bodies = [skill.tick(contested).body for _ in range(1 + STALL_FRAMES + SIDESTEP_FRAMES + 1)]
+    assert all(b.actionType == KICK for b in bodies[:1 + STALL_FRAMES])  # kicks, and the ball stays
+    for b in bodies[1 + STALL_FRAMES:-1]:
+        assert (b.actionType, b.forward, b.left, b.turn) == (WALK, 0.0, pytest.approx(-150.0), pytest.approx(0.5))
+    assert bodies[-1].actionType == KICK  # then kicks again from there
+
+
+def test_a_contested_ball_that_moves_starts_the_stall_count_again():
+    skill = LineUpAndKick()
+    for _ in range(STALL_FRAMES):
+        skill.tick(contest_board(robots=[seenRobot(450.0, 120.0)]))
+    moved = board(CONTEST_POS, ball=relative(CONTEST_POS, 190.0, -10.0), robots=[seenRobot(450.0, 120.0)])  # 110 mm
+    assert all(skill.tick(moved).body.actionType == KICK for _ in range(STALL_FRAMES))
 
 
 def test_a_robot_the_sonar_finds_at_the_ball_contests_it():

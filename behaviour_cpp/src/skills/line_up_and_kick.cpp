@@ -30,12 +30,38 @@ ActionCommand::All LineUpAndKick::tick(const Blackboard& blackboard) {
   const float aimError = normaliseTheta(std::atan2(goalY_ - ball.y, goalX_ - ball.x) - pos.theta);
   seen_ = remember(seen_, blackboard);
   contested_ = false;
-  for (const Obstacle& o : obstacles(blackboard, seen_))
-    contested_ = contested_ || std::hypot(o.x - ballRR.x(), o.y - ballRR.y()) < CONTEST_DIST;
+  float nearest = CONTEST_DIST, nearestY = 0.f;
+  for (const Obstacle& o : obstacles(blackboard, seen_)) {
+    const float dist = std::hypot(o.x - ballRR.x(), o.y - ballRR.y());
+    contested_ = contested_ || dist < CONTEST_DIST;
+    if (dist < nearest) {
+      nearest = dist;
+      nearestY = o.y;
+    }
+  }
   const bool far = std::hypot(goalX_ - ball.x, goalY_ - ball.y) > KICK_FAR_DIST;
   aimTolerance_ = contested_ ? CONTEST_ANGLE_TOLERANCE : far ? KICK_FAR_ANGLE_TOLERANCE : KICK_ANGLE_TOLERANCE;
   updateLiningUp(ballRR, aimError);
-  if (!liningUp_) return goToBall_.tick(blackboard);
+  if (!liningUp_) {
+    stalledFrames_ = sidestepFrames_ = 0;
+    return goToBall_.tick(blackboard);
+  }
+  if (sidestepFrames_ > 0) { // a stalled contest: step round the ball for a clear kick
+    --sidestepFrames_;
+    return actioncommand::compose(
+        {}, actioncommand::walk(0.f, sidestepLeft_, clamp(TURN_GAIN * ballRR.heading, -LINE_UP_MAX_TURN, LINE_UP_MAX_TURN)));
+  }
+  if (contested_ && std::hypot(ball.x - stallBallX_, ball.y - stallBallY_) < STALL_BALL_MOVE) {
+    if (++stalledFrames_ >= STALL_FRAMES) {
+      stalledFrames_ = 0;
+      sidestepFrames_ = SIDESTEP_FRAMES;
+      sidestepLeft_ = nearestY > ballRR.y() ? -LINE_UP_MAX_SPEED : LINE_UP_MAX_SPEED;
+    }
+  } else {
+    stalledFrames_ = 0;
+    stallBallX_ = ball.x;
+    stallBallY_ = ball.y;
+  }
   return actioncommand::compose({}, lineUp(ballRR, aimError));
 }
 

@@ -89,6 +89,33 @@ TEST(LineUpAndKickSkill, AContestedBallIsKickedAtOnceWhereverItGainsGround) {
   EXPECT_EQ(body.foot, Foot::LEFT);
 }
 
+TEST(LineUpAndKickSkill, AStalledContestStepsRoundTheBallAwayFromTheRobotThenKicksAgain) {
+  Blackboard blackboard = contestBoard();
+  blackboard.vision.robots = {seenRobot(450.f, 120.f)}; // left of the ball: step right
+  LineUpAndKick skill;
+  for (int frame = 0; frame < 1 + STALL_FRAMES; ++frame) // kicks, and the ball stays
+    EXPECT_EQ(skill.tick(blackboard).body.actionType, ActionType::KICK) << frame;
+  for (int frame = 0; frame < SIDESTEP_FRAMES; ++frame) {
+    const auto command = skill.tick(blackboard);
+    EXPECT_EQ(command.body.actionType, ActionType::WALK) << frame;
+    expectVelocities(command, 0.f, -150.f, 0.5f);
+  }
+  EXPECT_EQ(skill.tick(blackboard).body.actionType, ActionType::KICK); // then kicks again from there
+}
+
+TEST(LineUpAndKickSkill, AContestedBallThatMovesStartsTheStallCountAgain) {
+  Blackboard blackboard = contestBoard();
+  blackboard.vision.robots = {seenRobot(450.f, 120.f)};
+  LineUpAndKick skill;
+  for (int frame = 0; frame < STALL_FRAMES; ++frame) skill.tick(blackboard);
+  const AbsCoord pos{1500.f, 0.f, 0.9f};
+  const auto [x, y] = relative(pos, 190.f, -10.f); // 110 mm from where it was
+  Blackboard moved = board(pos, x, y);
+  moved.vision.robots = blackboard.vision.robots;
+  for (int frame = 0; frame < STALL_FRAMES; ++frame)
+    EXPECT_EQ(skill.tick(moved).body.actionType, ActionType::KICK) << frame;
+}
+
 TEST(LineUpAndKickSkill, ARobotTheSonarFindsAtTheBallContestsIt) {
   Blackboard blackboard = contestBoard();
   blackboard.motion.sonarLeft = 0.4f; // 400 mm ahead

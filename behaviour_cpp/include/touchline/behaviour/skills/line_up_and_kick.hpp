@@ -4,7 +4,10 @@
 // ball's side when lining up starts and kept until it ends. The aim may be off by
 // KICK_FAR_ANGLE_TOLERANCE while the goal is far; while a robot (avoid.hpp's obstacles) is
 // within CONTEST_DIST of the ball, the robot kicks at once wherever the kick gains ground
-// (CONTEST_* tolerances) instead of lining up slowly under its feet. The port of
+// (CONTEST_* tolerances) instead of lining up slowly under its feet. A contest in which the
+// ball has not moved STALL_BALL_MOVE for STALL_FRAMES (kicks into an opponent's feet, the ball
+// wedged) makes the robot step sideways round the ball, away from the nearest robot, for
+// SIDESTEP_FRAMES, so the next kick has a clear line. The port of
 // behaviour_py/skills/line_up_and_kick.py.
 #include <optional>
 #include <string>
@@ -28,6 +31,9 @@ inline constexpr float CONTEST_DIST = 500.f;         ///< mm: an obstacle this n
 inline constexpr float CONTEST_ANGLE_TOLERANCE = 1.2f; ///< rad: ... kick this far off the goal ...
 inline constexpr float CONTEST_X_TOLERANCE = 80.f;   ///< mm: ... with the ball this far off the kicking spot ...
 inline constexpr float CONTEST_Y_TOLERANCE = 70.f;   ///< mm: ... and the foot's line (the swing still meets it)
+inline constexpr int STALL_FRAMES = 60;                ///< frames (2 s) contested without the ball moving ...
+inline constexpr float STALL_BALL_MOVE = 100.f;        ///< mm: ... this far: then ...
+inline constexpr int SIDESTEP_FRAMES = 30;             ///< frames (1 s) of stepping sideways round the ball
 inline constexpr float LINE_UP_ENTER_DIST = 300.f;   ///< mm: start lining up when the ball is this close ...
 inline constexpr float LINE_UP_ENTER_ANGLE = 0.6f;   ///< rad: ... ahead, and the goal this well in line
 inline constexpr float LINE_UP_LEAVE_DIST = 500.f;   ///< mm: back to approaching beyond this ...
@@ -68,6 +74,10 @@ class LineUpAndKick : public api::Behaviour {
   std::vector<Sighting> seen_; ///< the robots the camera saw (remember())
   bool contested_ = false;
   float aimTolerance_ = KICK_ANGLE_TOLERANCE; ///< this tick's: normal, far or contested
+  int stalledFrames_ = 0;   ///< contested frames without the ball moving STALL_BALL_MOVE from stallBall
+  float stallBallX_ = 0.f, stallBallY_ = 0.f;
+  int sidestepFrames_ = 0;  ///< sidestep frames left, at sidestepLeft_ mm/s
+  float sidestepLeft_ = 0.f;
 };
 
 } // namespace touchline::behaviour::skills
