@@ -7,9 +7,10 @@ The programs judge their own options (one source of truth): `sim_world --check` 
 world config with every --set through the world's own loader and prints the match's planned
 length (read here for the progress bar); `robot_shim --check` makes the behaviour with its
 parameters (a Python module's optional check_params(params) judges them) and reads the
-robot's config files. In process no robot_shim runs, so a Python skill's name is checked
-here against the SKILL_NAMES of the Python behaviour's behaviour.py (behaviour_py/behaviour.py,
-or --python-dir's), read without importing it; touchline_match judges the rest as it starts.
+robot's config files. A Python skill's name is also checked here, first and in either mode,
+against the SKILL_NAMES of the Python behaviour's behaviour.py (behaviour_py/behaviour.py, or
+--python-dir's), read without importing it, so the refusal lists the known skills; in process
+no robot_shim runs, and touchline_match judges the rest of the parameters as it starts.
 """
 from __future__ import annotations
 

@@ -75,13 +75,12 @@ class LineUpAndKick:
         ballRR = robot.toRobotRelative(pos, ball.x, ball.y)
         aimError = robot.normaliseTheta(math.atan2(self.goalY - ball.y, self.goalX - ball.x) - pos.theta)
         self.seen = remember(self.seen, blackboard)
-        self.contested = False
-        nearest, nearestY = CONTEST_DIST, 0.0
+        nearest, nearestY = CONTEST_DIST, 0.0  # the obstacle nearest the ball within CONTEST_DIST
         for x, y in obstacles(blackboard, self.seen):
             dist = math.hypot(x - ballRR.x(), y - ballRR.y())
-            self.contested = self.contested or dist < CONTEST_DIST
             if dist < nearest:
                 nearest, nearestY = dist, y
+        self.contested = nearest < CONTEST_DIST
         far = math.hypot(self.goalX - ball.x, self.goalY - ball.y) > KICK_FAR_DIST
         self.aimTolerance = (CONTEST_ANGLE_TOLERANCE if self.contested
                              else KICK_FAR_ANGLE_TOLERANCE if far else KICK_ANGLE_TOLERANCE)

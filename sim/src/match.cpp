@@ -183,6 +183,7 @@ bool Match::may_move(RobotId id, const OnField& robot) const {
 }
 
 bool Match::steps_towards_winner(const OnField& robot, const TickMotion& motion) const {
+  if (robot.stopped_by.empty()) return false; // most robots, most ticks: no pose to look up
   const Pose2D body = world_.robot(robot.world_index).body;
   for (RobotId winner : robot.stopped_by)
     if (auto it = on_field_.find(winner); it != on_field_.end() &&

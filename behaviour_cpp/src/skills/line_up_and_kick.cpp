@@ -29,16 +29,15 @@ ActionCommand::All LineUpAndKick::tick(const Blackboard& blackboard) {
   const RRCoord ballRR = toRobotRelative(pos, ball.x, ball.y);
   const float aimError = normaliseTheta(std::atan2(goalY_ - ball.y, goalX_ - ball.x) - pos.theta);
   seen_ = remember(seen_, blackboard);
-  contested_ = false;
-  float nearest = CONTEST_DIST, nearestY = 0.f;
+  float nearest = CONTEST_DIST, nearestY = 0.f; // the obstacle nearest the ball within CONTEST_DIST
   for (const Obstacle& o : obstacles(blackboard, seen_)) {
     const float dist = std::hypot(o.x - ballRR.x(), o.y - ballRR.y());
-    contested_ = contested_ || dist < CONTEST_DIST;
     if (dist < nearest) {
       nearest = dist;
       nearestY = o.y;
     }
   }
+  contested_ = nearest < CONTEST_DIST;
   const bool far = std::hypot(goalX_ - ball.x, goalY_ - ball.y) > KICK_FAR_DIST;
   aimTolerance_ = contested_ ? CONTEST_ANGLE_TOLERANCE : far ? KICK_FAR_ANGLE_TOLERANCE : KICK_ANGLE_TOLERANCE;
   updateLiningUp(ballRR, aimError);
