@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "touchline/angles.hpp"
 #include "touchline/hash.hpp"
@@ -82,6 +83,9 @@ struct World::Impl {
     RobotId id;
     b2Body* left = nullptr;
     b2Body* right = nullptr;
+    /// The twist (right foot's heading less the left's) the walk's own commands made since
+    /// the robot was placed, rad: what hold_twist leaves alone.
+    float walk_twist_rad = 0;
   };
 
   Field field;
@@ -236,6 +240,7 @@ struct World::Impl {
       throw std::out_of_range("World: no robot " + std::to_string(index));
     return robots[static_cast<std::size_t>(index)];
   }
+  Robot& robot_at(int index) { return const_cast<Robot&>(std::as_const(*this).robot_at(index)); }
 
   /// Constant rolling resistance (Box2D has none): slows the ball by decel*h, never reverses it.
   void apply_rolling_resistance(float h) {
@@ -264,14 +269,12 @@ struct World::Impl {
     contact_rules.touches.clear();
     std::vector<FootVelocity> commands;
     commands.reserve(2 * robots.size());
-    std::vector<float> commanded_twist;  // each robot's twist after the tick, had nothing touched it
-    commanded_twist.reserve(robots.size());
     for (std::size_t i = 0; i < robots.size(); ++i) {
-      const Robot& r = robots[i];
+      Robot& r = robots[i];
       const float theta = mean_heading(r.left->GetAngle(), r.right->GetAngle());
       commands.push_back(foot_velocity(r.left, theta, motions[i].left));
       commands.push_back(foot_velocity(r.right, theta, motions[i].right));
-      commanded_twist.push_back(twist_of(r) + motions[i].right.dtheta_rad - motions[i].left.dtheta_rad);
+      r.walk_twist_rad = normalise_angle(r.walk_twist_rad + motions[i].right.dtheta_rad - motions[i].left.dtheta_rad);
     }
     const int substeps = std::max(1, physics.substeps);
     const float h = kMotionTick_s / static_cast<float>(substeps);
@@ -284,7 +287,7 @@ struct World::Impl {
     // A foot without a command next tick stays put.
     for (const FootVelocity& c : commands) set_velocity(c.foot, b2Vec2(0, 0), 0.f);
     if (physics.max_foot_twist_rad > 0)
-      for (std::size_t i = 0; i < robots.size(); ++i) hold_twist(robots[i], commanded_twist[i]);
+      for (const Robot& r : robots) hold_twist(r);
     ++ticks;
   }
 
@@ -293,12 +296,14 @@ struct World::Impl {
 
   /// Turns both feet of `r` towards each other, equally (their mean heading stays where it
   /// was), until one is at most max_foot_twist_rad from the other, or as far as the walk
-  /// itself turned them apart (`commanded` rad, the twist had nothing touched them): only a
-  /// contact's twist is held, never the walk's own (a turning walk's feet open ~0.83 rad).
-  void hold_twist(const Robot& r, float commanded) const {
+  /// itself turned them apart (r.walk_twist_rad): only a contact's twist is held, never the
+  /// walk's own (a turning walk's feet open ~0.83 rad). The bound is the walk's twist, not
+  /// the twist before the tick plus the walk's turn in it: that ratchets, a contact's excess
+  /// kept whenever the walk turned the same way, up to the feet pi apart.
+  void hold_twist(const Robot& r) const {
     constexpr float kSolverSlack_rad = 1e-4f; // the solver's rounding on an untouched foot: no correction
     const float twist = twist_of(r);
-    const float bound = std::max(physics.max_foot_twist_rad, std::fabs(normalise_angle(commanded)));
+    const float bound = std::max(physics.max_foot_twist_rad, std::fabs(r.walk_twist_rad));
     if (std::fabs(twist) <= bound + kSolverSlack_rad) return;
     const float excess = 0.5f * (twist - std::copysign(bound, twist));
     r.left->SetTransform(r.left->GetPosition(), r.left->GetAngle() + excess);
@@ -335,10 +340,11 @@ int World::add_robot(RobotId id, const Pose2D& body) {
 }
 
 void World::place_robot(int index, const Pose2D& body) {
-  const Impl::Robot& robot = impl_->robot_at(index);
+  Impl::Robot& robot = impl_->robot_at(index);
   const auto [left, right] = impl_->feet_at(body);
   Impl::place(robot.left, left);
   Impl::place(robot.right, right);
+  robot.walk_twist_rad = 0; // placed with its feet parallel
 }
 
 void World::place_ball(float x_mm, float y_mm, float vx_mm_s, float vy_mm_s) {
@@ -386,6 +392,7 @@ uint64_t World::state_hash() const {
     for (float value : {p.x, p.y, body->GetAngle(), v.x, v.y, body->GetAngularVelocity()})
       hash.add_value(value);
   }
+  for (const Impl::Robot& r : impl_->robots) hash.add_value(r.walk_twist_rad);
   hash.add_value(impl_->ticks);
   return hash.value();
 }

@@ -544,6 +544,30 @@ TEST(World, TheLegsLeaveTheWalksOwnTwistAlone) {
   }
 }
 
+// A contact's twist is held even while the walk turns the feet the same way: robot 0 opens
+// its feet to 0.6 rad and closes them again, over and over, while robot 1 shoves it. The
+// feet stay within max_foot_twist_rad of each other at every tick (the bound once took the
+// walk's turn on top of whatever twist the feet had, and ratcheted up to the feet pi apart).
+TEST(World, TheLegsHoldAContactsTwistWhileTheWalkTurns) {
+  PhysicsDef physics;
+  World world(FieldDef{}, physics);
+  world.add_robot(kRed1, Pose2D{0, 0, 0});
+  world.add_robot(kBlue1, Pose2D{150, 300, -0.5f * kPi});
+  park_ball(world);
+  TickMotion drive;
+  drive.left.dx_mm = drive.right.dx_mm = 20;
+  drive.left.dtheta_rad = drive.right.dtheta_rad = -0.1f;
+  float worst = 0;
+  for (int t = 0; t < 300; ++t) {
+    TickMotion turn;
+    turn.right.dtheta_rad = (t / 30) % 2 == 0 ? 0.02f : -0.02f; // 0 -> 0.6 rad -> 0, every 60 ticks
+    world.step({turn, drive});
+    const RobotTruth r = world.robot(0);
+    worst = std::max(worst, std::fabs(normalise_angle(r.right_foot.theta_rad - r.left_foot.theta_rad)));
+  }
+  EXPECT_LE(worst, physics.max_foot_twist_rad + 1e-3f);
+}
+
 // --- determinism ------------------------------------------------------------------------
 
 /// A busy scene: four robots around the ball, kicked off at 3 m/s.

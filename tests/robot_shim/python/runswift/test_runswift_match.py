@@ -24,10 +24,11 @@ def runswift_shim(match, team, player, pydir, *params):
 
 
 def test_our_runswift_behaviour_plays_2v2_and_scores(tmp_path):
-    # 200 s: the first goal falls at 122 s with seed 1 (READY shortened to 5 s; no stuck-game
+    # 300 s: the first goal falls between 200 s and 250 s with seed 1 (at 122 s before the legs
+    # held a contact's twist while the walk turned; READY shortened to 5 s; no stuck-game
     # restarts: the ball lies untouched from 68 s to 98 s while our small behaviour looks for it;
     # pushing judged as the thesis does, the rules this timing was measured under).
-    match = start_world(tmp_path, 4, 200, "--config", FIELD, "--set", "match.team_size=2",
+    match = start_world(tmp_path, 4, 300, "--config", FIELD, "--set", "match.team_size=2",
                         "--set", "rules.ready_s=5", "--set", "rules.game_stuck_s=0",
                         "--set", "rules.pushing_model=thesis", "--seed", 1)
     try:
