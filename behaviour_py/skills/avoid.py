@@ -1,8 +1,9 @@
 """Avoid: walk around robots instead of into them, never through the own goal box, and back
 off when blocked. GoToPose passes every walk it asks for through Avoid.tick.
 
-Reads: motion.sonarLeft/sonarRight/sonarRange_mm, vision.robots, receiver.messages (the
-teammates' poses), localisation.robotPos, gameController.playerNumber, utime. Writes nothing.
+Reads: motion.sonarLeft/sonarRight/sonarRange_mm, motion.touch* (the foot bumpers and arms),
+vision.robots, receiver.messages (the teammates' poses), localisation.robotPos,
+gameController.playerNumber, utime. Writes nothing.
 
 Obstacles, robot frame (x forward, y left), from what a robot really has:
 - the sonars (thesis Algorithm 2.4): a reading under 1 is a body that far ahead in the left
@@ -10,7 +11,16 @@ Obstacles, robot frame (x forward, y left), from what a robot really has:
 - the robots the camera saw, remembered in the field frame for SEEN_MEMORY_US (the head
   follows the ball, so a robot beside the walk is seen now and then); a sighting replaces
   those remembered within SEEN_MERGE_DIST of it;
-- the teammates' own poses from their team messages (fresh, not penalised).
+- the teammates' own poses from their team messages (fresh, not penalised);
+- a touch (a robot against the foot bumpers or an arm, which the camera may never have seen:
+  it looks at the ball, and most robots walked into are beside or behind), a body TOUCH_DIST
+  away at its sector's middle: TOUCH_FRONT_BEARING either side ahead, beside, behind.
+
+Off a touch: a sensor only tells the sector (TOUCH_FRONT_HALF_WIDTH, TOUCH_SIDE_HALF_WIDTH
+either side of its middle), and a robot at its edge is pushed by a walk that passes its
+middle. So a walk that closes on any bearing of a touched sector (less than 90 deg from it)
+turns, its speed kept, to the nearest direction that closes on none; it stops if every
+direction does. This comes after the steering and the backing off, before the own goal box.
 
 Around robots (a tangent rule): the nearest obstacle ahead on the walk's line, within
 AVOID_LOOKAHEAD and nearer than the target, and less than AVOID_CLEARANCE off the line,
@@ -31,7 +41,8 @@ another at contact counts as pushing it).
 Back off: a walk that for BLOCKED_FRAMES frames in a row has an obstacle within
 BLOCKED_OBSTACLE_DIST in the way and gets less than BLOCKED_PROGRESS closer to its target
 becomes BACK_OFF_FRAMES frames of stepping back and aside, away from that obstacle. Frames
-count while the walk is asked for every frame (utime at most FRAME_GAP_US apart).
+count while the walk is asked for every frame (utime at most FRAME_GAP_US apart). Backing off
+and making way are steered round the obstacles too, so neither steps into a robot behind.
 """
 import math
 
@@ -59,6 +70,20 @@ SEEN_MEMORY_US = 1500000         # us: a robot the camera saw stays an obstacle 
 SEEN_MERGE_DIST = 400.0          # mm: a sighting replaces remembered robots this near it
 YIELD_DIST = 400.0               # mm: a standing robot makes way for one ahead this near ...
 YIELD_SPEED = 150.0              # mm/s: ... stepping straight away from it
+TOUCH_DIST = 200.0               # mm: a robot felt by touch is this far ...
+TOUCH_FRONT_BEARING = math.pi / 8  # rad: ... at this bearing either side ahead (a foot bumper's middle)
+TOUCH_FRONT_HALF_WIDTH = math.pi / 8  # rad: a foot bumper feels this far either side of its middle
+TOUCH_SIDE_HALF_WIDTH = math.pi / 4   # rad: an arm (beside, behind) this far
+
+
+def touchedSectors(motion):
+    """[(middle, half width)], rad, robot frame: the sectors in which a robot touches this one."""
+    sectors = ((motion.touchFrontLeft, TOUCH_FRONT_BEARING, TOUCH_FRONT_HALF_WIDTH),
+               (motion.touchFrontRight, -TOUCH_FRONT_BEARING, TOUCH_FRONT_HALF_WIDTH),
+               (motion.touchLeft, math.pi / 2, TOUCH_SIDE_HALF_WIDTH),
+               (motion.touchRight, -math.pi / 2, TOUCH_SIDE_HALF_WIDTH),
+               (motion.touchBack, math.pi, TOUCH_SIDE_HALF_WIDTH))
+    return [(middle, half) for touched, middle, half in sectors if touched]
 
 
 def remember(seen, blackboard):
@@ -100,7 +125,15 @@ def obstacles(blackboard, seen=()):
             continue
         rr = robot.toRobotRelative(pos, float(info.robotX), float(info.robotY))
         found.append((rr.x(), rr.y()))
+    for middle, _ in touchedSectors(motion):
+        found.append((exactZero(TOUCH_DIST * math.cos(middle)), exactZero(TOUCH_DIST * math.sin(middle))))
     return found
+
+
+def exactZero(value):
+    """value, or 0 within 1e-3 of it: cos(pi / 2) is 6e-17 in a double and -4e-8 in a float,
+    and a touch beside must be neither ahead nor behind in both ports."""
+    return 0.0 if abs(value) < 1e-3 else value
 
 
 def inOwnBox(x, y):
@@ -132,6 +165,35 @@ def steer(forward, left, found, targetDist):
     half = math.pi / 2 if dist <= AVOID_CLEARANCE else math.asin(AVOID_CLEARANCE / dist)
     angle = math.atan2(y, x) + side * half
     return clampWalk(speed * math.cos(angle), speed * math.sin(angle))
+
+
+def keepOffTouches(motion, forward, left):
+    """(forward, left) turned to the nearest direction that closes on no touched sector, its
+    speed kept; (0, 0) when every direction closes on one."""
+    speed = math.hypot(forward, left)
+    sectors = touchedSectors(motion)
+    if speed < MIN_WALK_SPEED or not sectors:
+        return forward, left
+    reaches = [(middle, half + math.pi / 2) for middle, half in sectors]  # directions closing on it
+
+    def closes(direction):
+        return any(abs(robot.normaliseTheta(direction - middle)) < reach - 1e-4 for middle, reach in reaches)
+
+    direction = math.atan2(left, forward)
+    if not closes(direction):
+        return forward, left
+    best = None  # (edge, how far it turns the walk): the first of equal turns (within 1e-4 rad) wins
+    for middle, reach in reaches:
+        for side in (-1.0, 1.0):
+            edge = middle + side * reach
+            if closes(edge):
+                continue
+            off = abs(robot.normaliseTheta(edge - direction))
+            if best is None or off < best[1] - 1e-4:
+                best = (edge, off)
+    if best is None:
+        return 0.0, 0.0
+    return clampWalk(speed * math.cos(best[0]), speed * math.sin(best[0]))
 
 
 def keepOutOfOwnBox(pos, forward, left):
@@ -183,16 +245,17 @@ class Avoid:
             self.backOffFrames = 0
         self.lastUtime = utime
         self.seen = remember(self.seen, blackboard)
+        found = obstacles(blackboard, self.seen)
         backing = self.backOffFrames > 0
         if backing:
             self.backOffFrames -= 1
         else:
-            found = obstacles(blackboard, self.seen)
             backing = self.blocked(found, body.forward, body.left, targetDist)
             if not backing:
                 forward, left = steer(body.forward, body.left, found, targetDist)
         if backing:
-            forward, left = BACK_OFF_FORWARD, self.backOffLeft
+            forward, left = steer(BACK_OFF_FORWARD, self.backOffLeft, found, AVOID_LOOKAHEAD)
+        forward, left = keepOffTouches(blackboard.motion, forward, left)
         if blackboard.gameController.playerNumber != GOALIE_PLAYER:
             forward, left = keepOutOfOwnBox(blackboard.localisation.robotPos, forward, left)
         return actioncommand.walk(forward, left, 0.0 if backing else body.turn)
@@ -203,14 +266,16 @@ class Avoid:
         self.seen = remember(self.seen, blackboard)
         nearest = None
         now = [entry for entry in self.seen if entry[0] == blackboard.utime]  # not remembered ones: they may have gone
-        for x, y in obstacles(blackboard, now):
+        found = obstacles(blackboard, now)
+        for x, y in found:
             dist = math.hypot(x, y)
             if x > 0.0 and dist < YIELD_DIST and (nearest is None or dist < nearest[0]):
                 nearest = (dist, x, y)
         if nearest is None:
             return actioncommand.stand()
         dist, x, y = nearest
-        forward, left = -YIELD_SPEED * x / dist, -YIELD_SPEED * y / dist
+        forward, left = steer(-YIELD_SPEED * x / dist, -YIELD_SPEED * y / dist, found, YIELD_DIST)
+        forward, left = keepOffTouches(blackboard.motion, forward, left)
         if blackboard.gameController.playerNumber != GOALIE_PLAYER:
             forward, left = keepOutOfOwnBox(blackboard.localisation.robotPos, forward, left)
         return actioncommand.walk(forward, left)

@@ -135,6 +135,11 @@ sense_t to_lcm(const SenseFrame& frame) {
     }
     s.sonar_left = r.sonar_left;
     s.sonar_right = r.sonar_right;
+    s.touch_front_left = r.touch.front_left;
+    s.touch_front_right = r.touch.front_right;
+    s.touch_left = r.touch.left;
+    s.touch_right = r.touch.right;
+    s.touch_back = r.touch.back;
     s.penalised = r.penalised;
     s.fallen = r.fallen;
     s.placed = r.placed;
@@ -203,6 +208,11 @@ SenseFrame from_lcm(const sense_t& m) {
     check_fraction(s.sonar_right, "sonar_right", what);
     r.sonar_left = s.sonar_left;
     r.sonar_right = s.sonar_right;
+    r.touch.front_left = s.touch_front_left;
+    r.touch.front_right = s.touch_front_right;
+    r.touch.left = s.touch_left;
+    r.touch.right = s.touch_right;
+    r.touch.back = s.touch_back;
     r.penalised = s.penalised;
     r.fallen = s.fallen;
     r.placed = s.placed;

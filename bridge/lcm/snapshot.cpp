@@ -120,6 +120,11 @@ blackboard_snapshot_t to_snapshot(const api::Blackboard& bb, RobotId id, int64_t
   m.sonar_left = bb.motion.sonarLeft;
   m.sonar_right = bb.motion.sonarRight;
   m.sonar_range_mm = bb.motion.sonarRange_mm;
+  m.touch_front_left = bb.motion.touchFrontLeft;
+  m.touch_front_right = bb.motion.touchFrontRight;
+  m.touch_left = bb.motion.touchLeft;
+  m.touch_right = bb.motion.touchRight;
+  m.touch_back = bb.motion.touchBack;
 
   const auto& loc = bb.localisation;
   m.robot_pos = pose(loc.robotPos);
@@ -187,6 +192,11 @@ api::Blackboard from_snapshot(const blackboard_snapshot_t& m) {
   bb.motion.sonarLeft = check.finite(m.sonar_left, "sonar_left");
   bb.motion.sonarRight = check.finite(m.sonar_right, "sonar_right");
   bb.motion.sonarRange_mm = check.finite(m.sonar_range_mm, "sonar_range_mm");
+  bb.motion.touchFrontLeft = m.touch_front_left;
+  bb.motion.touchFrontRight = m.touch_front_right;
+  bb.motion.touchLeft = m.touch_left;
+  bb.motion.touchRight = m.touch_right;
+  bb.motion.touchBack = m.touch_back;
 
   auto& loc = bb.localisation;
   loc.robotPos = pose(m.robot_pos, check);

@@ -160,6 +160,11 @@ PyGetSetDef g_motion_fields[] = {
     TL_FIELD(MotionBlackboard, sonarLeft, "nearest obstacle on the left, fraction of sonarRange_mm (1: none)"),
     TL_FIELD(MotionBlackboard, sonarRight, "nearest obstacle on the right, fraction of sonarRange_mm (1: none)"),
     TL_FIELD(MotionBlackboard, sonarRange_mm, "the sonars' range, mm"),
+    TL_FIELD(MotionBlackboard, touchFrontLeft, "a robot touches the left foot bumper (0 to 45 deg left)"),
+    TL_FIELD(MotionBlackboard, touchFrontRight, "a robot touches the right foot bumper (0 to 45 deg right)"),
+    TL_FIELD(MotionBlackboard, touchLeft, "a robot touches the left arm (45 to 135 deg left)"),
+    TL_FIELD(MotionBlackboard, touchRight, "a robot touches the right arm (45 to 135 deg right)"),
+    TL_FIELD(MotionBlackboard, touchBack, "a robot touches the back (beyond 135 deg)"),
     {nullptr, nullptr, nullptr, nullptr, nullptr}};
 
 PyGetSetDef g_localisation_fields[] = {

@@ -73,6 +73,11 @@ void write_fall(const RobotSense& sense, api::Blackboard& blackboard) {
   blackboard.motion.fallen = sense.fallen;
   blackboard.motion.sonarLeft = sense.sonar_left;
   blackboard.motion.sonarRight = sense.sonar_right;
+  blackboard.motion.touchFrontLeft = sense.touch.front_left;
+  blackboard.motion.touchFrontRight = sense.touch.front_right;
+  blackboard.motion.touchLeft = sense.touch.left;
+  blackboard.motion.touchRight = sense.touch.right;
+  blackboard.motion.touchBack = sense.touch.back;
 }
 
 void write_receiver(const RobotSense& sense, api::Blackboard& blackboard) {

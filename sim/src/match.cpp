@@ -93,6 +93,7 @@ SenseFrame Match::sense() {
     const SonarReading sonar = perception_.sonar(me, all, frame_);
     sense.sonar_left = sonar.left;
     sense.sonar_right = sonar.right;
+    sense.touch = perception_.touch(me, all);
     sense.penalised = penalised(id);
     sense.fallen = fallen(robot);
     sense.placed = std::exchange(robot.placed, false);

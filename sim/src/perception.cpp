@@ -133,6 +133,13 @@ SonarReading Perception::sonar(const Viewer& me, const std::vector<Viewer>& robo
   return reading;
 }
 
+Touch Perception::touch(const Viewer& me, const std::vector<Viewer>& robots) const {
+  Touch touch;
+  for (const Viewer& other : robots)
+    if (other.id != me.id) touch_update(def_.touch, me.body, other.body.x_mm, other.body.y_mm, touch);
+  return touch;
+}
+
 std::vector<Percept> Perception::perceive(const std::vector<Viewer>& robots, const BallTruth& ball,
                                           int64_t frame) const {
   std::vector<Percept> percepts;
@@ -142,6 +149,7 @@ std::vector<Percept> Perception::perceive(const std::vector<Viewer>& robots, con
     p.id = me.id;
     p.seen = observe(me, robots, ball, frame);
     p.sonar = sonar(me, robots, frame);
+    p.touch = touch(me, robots);
     percepts.push_back(std::move(p));
   }
   return percepts;

@@ -29,7 +29,8 @@ void bind(IniSchema& s, PerceptionDef& d) {
       .bind("sonar.range_mm", &d.sonar.range_mm, "farthest obstacle reported, mm")
       .bind("sonar.half_width_mm", &d.sonar.half_width_mm, "corridor half width, mm")
       .bind("sonar.noise_sd_mm", &d.sonar_noise_sd_mm, "reading noise sigma, mm")
-      .bind("sonar.sees_goal_posts", &d.sonar_sees_goal_posts, "goal posts echo too, true/false");
+      .bind("sonar.sees_goal_posts", &d.sonar_sees_goal_posts, "goal posts echo too, true/false")
+      .bind("touch.distance_mm", &d.touch.distance_mm, "another robot's centre this near touches, mm (0: none)");
 }
 
 void validate(const PerceptionDef& d) {
@@ -57,6 +58,7 @@ void validate(const PerceptionDef& d) {
   require_positive("sonar.range_mm", d.sonar.range_mm);
   require_positive("sonar.half_width_mm", d.sonar.half_width_mm);
   require_non_negative("sonar.noise_sd_mm", d.sonar_noise_sd_mm);
+  require_non_negative("touch.distance_mm", d.touch.distance_mm);
 }
 
 } // namespace touchline::sim

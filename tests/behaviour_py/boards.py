@@ -9,15 +9,19 @@ from types import SimpleNamespace
 
 import robot
 
+TOUCH_SIDES = ("FrontLeft", "FrontRight", "Left", "Right", "Back")  # motion.touch<side>
+
 
 def board(pos=(0.0, 0.0, 0.0), ball=(1000.0, 0.0), seen=True, lost=0, headYaw=0.0, utime=0,
           state=robot.GameState.PLAYING, player=2, penalised=False, fallen=False, messages=(), sonar=(1.0, 1.0),
-          robots=(), odometry=(0.0, 0.0, 0.0)):
+          robots=(), odometry=(0.0, 0.0, 0.0), touch=()):
     """The robot at pos (x, y, theta), the ball at the field point `ball`; vision and
     localisation agree on it. seen: vision.ballSeen; lost: localisation.ballLostCount;
     state, player, penalised: gameController; fallen: motion.fallen; messages: receiver
     (objects with playerNumber, utime, data); sonar: motion's (left, right) readings, range
-    1000 mm; robots: vision.robots (seenRobot()); odometry: motion.odometry (x, y, theta)."""
+    1000 mm; robots: vision.robots (seenRobot()); odometry: motion.odometry (x, y, theta);
+    touch: the touched sectors, of "FrontLeft", "FrontRight", "Left", "Right", "Back"
+    (motion.touch*)."""
     robotPos = robot.AbsCoord(*pos)
     ballPos = robot.AbsCoord(ball[0], ball[1], 0.0)
     ballRR = robot.toRobotRelative(robotPos, ballPos.x, ballPos.y)
@@ -27,7 +31,8 @@ def board(pos=(0.0, 0.0, 0.0), ball=(1000.0, 0.0), seen=True, lost=0, headYaw=0.
                                      robotPosCovariance=[0.0] * 9),
         vision=SimpleNamespace(ballSeen=seen, ball=ballRR, robots=list(robots)),
         motion=SimpleNamespace(headYaw=headYaw, fallen=fallen, sonarLeft=sonar[0], sonarRight=sonar[1],
-                               sonarRange_mm=1000.0, odometry=robot.AbsCoord(*odometry)),
+                               sonarRange_mm=1000.0, odometry=robot.AbsCoord(*odometry),
+                               **{"touch" + side: side in touch for side in TOUCH_SIDES}),
         gameController=SimpleNamespace(state=state, team=0, playerNumber=player, penalised=penalised),
         receiver=SimpleNamespace(messages=list(messages)),
     )

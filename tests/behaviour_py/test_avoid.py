@@ -6,7 +6,8 @@ import pytest
 import robot
 from boards import board, message, seenRobot
 
-from skills.avoid import (AVOID_CLEARANCE, BACK_OFF_FRAMES, BLOCKED_FRAMES, SEEN_MEMORY_US, SONAR_SIDE_Y, Avoid,
+from skills.avoid import (AVOID_CLEARANCE, BACK_OFF_FRAMES, BLOCKED_FRAMES, SEEN_MEMORY_US, SONAR_SIDE_Y, TOUCH_DIST,
+                          TOUCH_FRONT_BEARING, Avoid, keepOffTouches,
                           keepOutOfOwnBox, obstacles, remember, steer)
 from skills.go_to_pose import GoToPose
 from skills.team_comm import ROLE_DEFENDER, TeamInfo, encodeMessage
@@ -46,6 +47,16 @@ def test_obstacles_from_sonar_camera_and_teammates():
     assert found[2] == pytest.approx((600.0, 0.0), abs=1e-3)  # the teammate 600 mm ahead
     assert obstacles(board(pos, sonar=(1.0, 0.25)))[0] == pytest.approx((250.0, -SONAR_SIDE_Y))
     assert obstacles(board(pos)) == []
+
+
+def test_a_touch_is_a_robot_at_its_sectors_bearing():
+    found = obstacles(board(touch=("FrontLeft", "Back")))
+    assert len(found) == 2
+    assert found[0] == pytest.approx((TOUCH_DIST * math.cos(TOUCH_FRONT_BEARING), TOUCH_DIST * math.sin(TOUCH_FRONT_BEARING)))
+    assert found[1] == pytest.approx((-TOUCH_DIST, 0.0), abs=1e-3)
+    assert obstacles(board(touch=("FrontRight",)))[0] == pytest.approx((found[0][0], -found[0][1]))
+    sides = obstacles(board(touch=("Left", "Right")))
+    assert sides[0] == pytest.approx((0.0, TOUCH_DIST), abs=1e-3) and sides[1] == pytest.approx((0.0, -TOUCH_DIST), abs=1e-3)
 
 
 def test_robots_seen_are_remembered_for_a_while_where_they_were():
@@ -89,6 +100,29 @@ def test_a_touching_robot_is_stepped_past_sideways():
     assert left < 0.0
 
 
+def test_a_walk_into_a_robot_it_feels_but_never_saw_turns_away_from_it():
+    # Walking forward and left into a robot against the left arm (45 to 135 deg): the walk keeps
+    # its speed but turns to -45 deg, the nearest direction closing on no bearing of the arm's.
+    free = Avoid().tick(board(utime=NOW), walk(200.0, 200.0), 2000.0)
+    assert (free.forward, free.left) == pytest.approx((200.0, 200.0))
+    body = Avoid().tick(board(touch=("Left",), utime=NOW), walk(200.0, 200.0), 2000.0)
+    assert (body.forward, body.left) == pytest.approx((200.0, -200.0), abs=1e-2)
+
+
+def test_a_walk_closing_on_no_touched_sector_is_left_alone():
+    assert keepOffTouches(board(touch=("Left",)).motion, 300.0, 0.0) == pytest.approx((200.0, -200.0))  # clampWalk's
+    assert keepOffTouches(board(touch=("Left",)).motion, 0.0, -200.0) == (0.0, -200.0)
+    assert keepOffTouches(board(touch=("Back",)).motion, 300.0, 0.0) == (300.0, 0.0)
+    assert keepOffTouches(board().motion, 0.0, 200.0) == (0.0, 200.0)
+
+
+def test_pressed_on_both_foot_bumpers_it_steps_back_and_boxed_in_it_stops():
+    forward, left = keepOffTouches(board(touch=("FrontLeft", "FrontRight")).motion, 200.0, 0.0)
+    assert math.atan2(left, forward) == pytest.approx(3 * math.pi / 4)  # back left: the first of two equal turns
+    assert math.hypot(forward, left) == pytest.approx(200.0)
+    assert keepOffTouches(board(touch=("FrontLeft", "Left", "Right", "Back")).motion, 200.0, 0.0) == (0.0, 0.0)
+
+
 def test_robots_out_of_the_way_are_left_alone():
     assert steer(300.0, 0.0, [(500.0, 450.0)], 2000.0) == (300.0, 0.0)   # off the line
     assert steer(300.0, 0.0, [(900.0, 0.0)], 2000.0) == (300.0, 0.0)     # beyond the lookahead
@@ -113,6 +147,13 @@ def test_a_robot_seen_once_is_walked_around_after_the_camera_looked_away():
 
 
 # Making way
+def test_making_way_never_steps_back_into_a_robot_touching_the_back():
+    goToPose = GoToPose(0.0, 0.0, 0.0)
+    body = goToPose.tick(board((0.0, 0.0, 0.0), sonar=(0.3, 1.0), touch=("Back",), utime=NOW)).body
+    assert body.actionType == robot.ActionType.WALK
+    assert body.forward >= 0.0 and body.left < 0.0  # aside, away from the robot ahead on the left
+
+
 def test_a_robot_at_its_target_steps_back_from_a_robot_ahead_of_it():
     goToPose = GoToPose(0.0, 0.0, 0.0)
     assert goToPose.tick(board((0.0, 0.0, 0.0), utime=NOW)).body.actionType == robot.ActionType.STAND
@@ -149,8 +190,9 @@ def test_the_goalie_and_a_robot_in_the_box_walk_as_asked():
 
 
 # Backing off
-def run(avoid, frames, sonar=(0.3, 1.0), targetDist=2000.0, start=0, step=FRAME_US):
-    return [avoid.tick(board(sonar=sonar, utime=NOW + (start + i) * step), walk(), targetDist) for i in range(frames)]
+def run(avoid, frames, sonar=(0.3, 1.0), targetDist=2000.0, start=0, step=FRAME_US, touch=()):
+    return [avoid.tick(board(sonar=sonar, touch=touch, utime=NOW + (start + i) * step), walk(), targetDist)
+            for i in range(frames)]
 
 
 def test_blocked_without_progress_backs_off_then_walks_again():
@@ -167,6 +209,11 @@ def test_blocked_without_progress_backs_off_then_walks_again():
 def test_an_obstacle_on_the_right_is_backed_off_to_the_left():
     bodies = run(Avoid(), BLOCKED_FRAMES, sonar=(1.0, 0.3))
     assert bodies[-1].forward < 0.0 and bodies[-1].left > 0.0
+
+
+def test_backing_off_never_steps_back_into_a_robot_touching_the_back():
+    bodies = run(Avoid(), BLOCKED_FRAMES, touch=("Back",))
+    assert bodies[-1].forward >= 0.0 and bodies[-1].left < 0.0  # aside, still away from the left
 
 
 def test_progress_or_a_clear_way_is_no_block():

@@ -1,5 +1,5 @@
 // The adapters that write the Blackboard from a sensed frame: here the game controller's
-// (every state and set play mapped by name, not by number).
+// (every state and set play mapped by name, not by number) and the fall adapter's.
 #include "touchline/robot/adapters.hpp"
 
 #include <gtest/gtest.h>
@@ -60,6 +60,25 @@ TEST(GameControllerAdapter, WhoTheRobotIsAndTheScoreReachTheBlackboard) {
   EXPECT_TRUE(gc.penalised);
   EXPECT_EQ(gc.score, (std::array<int, 2>{{4, 1}}));
   EXPECT_EQ(gc.secsRemaining, 321);
+}
+
+// What the robot feels reaches MotionBlackboard: lying down, the sonars, the touch sensors.
+TEST(FallAdapter, TheFallTheSonarsAndTheTouchesReachTheBlackboard) {
+  RobotSense sense;
+  sense.fallen = true;
+  sense.sonar_left = 0.25f;
+  sense.touch.front_left = sense.touch.back = true;
+  api::Blackboard blackboard;
+  write_fall(sense, blackboard);
+  const api::MotionBlackboard& m = blackboard.motion;
+  EXPECT_TRUE(m.fallen);
+  EXPECT_EQ(m.sonarLeft, 0.25f);
+  EXPECT_EQ(m.sonarRight, 1.f);
+  EXPECT_TRUE(m.touchFrontLeft && m.touchBack);
+  EXPECT_FALSE(m.touchFrontRight || m.touchLeft || m.touchRight);
+  sense.touch = Touch{};
+  write_fall(sense, blackboard);
+  EXPECT_FALSE(blackboard.motion.touchFrontLeft || blackboard.motion.touchBack) << "a touch lasts its frame";
 }
 
 } // namespace

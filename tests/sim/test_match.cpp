@@ -361,6 +361,24 @@ sim::WorldConfig one_a_side_playing() {
 
 } // namespace
 
+// Each robot feels where the other touches it: the one walked into from behind feels it on
+// its back, the one behind on its right foot bumper; apart, neither feels anything.
+TEST(Match, EachRobotFeelsWhereTheOtherTouchesIt) {
+  sim::Match match(one_a_side_playing());
+  match.join({0, 1}, 1, 0);
+  match.join({1, 1}, 2, 0);
+  match.start();
+  match.world().place_robot(0, {0, 0, 0});
+  match.world().place_robot(1, {-250, 20, 0}); // robot 0 is 250 mm ahead of it, a little to its right
+  const SenseFrame touching = match.sense();
+  EXPECT_TRUE(touching.find({0, 1})->touch.back);
+  EXPECT_TRUE(touching.find({1, 1})->touch.front_right);
+  match.world().place_robot(1, {-1000, 0, 0});
+  const SenseFrame apart = match.sense();
+  EXPECT_FALSE(apart.find({0, 1})->touch.any());
+  EXPECT_FALSE(apart.find({1, 1})->touch.any());
+}
+
 TEST(Match, PushingIsPenalisedAndThePushedRobotFallsThenGetsUp) {
   sim::WorldConfig config = one_a_side_playing();
   config.rules.fall_probability = 1;

@@ -266,6 +266,17 @@ TEST(Perception, SonarHearsGoalPostsWhenConfigured) {
   EXPECT_FLOAT_EQ(deaf.sonar(me, {me}, 0).right, 1.f);
 }
 
+TEST(Perception, TouchIsFeltFromEveryOtherRobotWithinReachButNotFromItself) {
+  Perception perception(kField, exact(), 1);
+  const Viewer me = viewer(0, 1, 0, 0, kPi / 2); // facing +y
+  // A teammate 200 mm to its left (-x), an opponent 250 mm behind, one 400 mm ahead (out of reach).
+  const Touch t = perception.touch(me, {viewer(0, 2, -200, 0, 0), me, viewer(1, 1, 0, -250, 0), viewer(1, 2, 0, 400, 0)});
+  EXPECT_TRUE(t.left);
+  EXPECT_TRUE(t.back);
+  EXPECT_FALSE(t.front_left || t.front_right || t.right);
+  EXPECT_FALSE(perception.touch(me, {me}).any());
+}
+
 TEST(Perception, PerceiveIsObserveAndSonarPerRobotInOrder) {
   const std::vector<Viewer> robots{viewer(0, 1, -500, 0, 0), viewer(1, 1, 500, 50, kPi), viewer(0, 2, 0, 800, -1)};
   const BallTruth ball = ball_at(0, 0);
@@ -284,6 +295,7 @@ TEST(Perception, PerceiveIsObserveAndSonarPerRobotInOrder) {
     }
     EXPECT_EQ(percepts[i].sonar.left, sonar.left);
     EXPECT_EQ(percepts[i].sonar.right, sonar.right);
+    EXPECT_EQ(percepts[i].touch.any(), apart.touch(robots[i], robots).any());
   }
   // Robots 1 and 2 face each other 1000 mm apart: just out of the 1000 mm sonar range.
   EXPECT_FLOAT_EQ(percepts[0].sonar.left, 1.f);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "touchline/behaviour/skills/actioncommand.hpp"
 #include "touchline/behaviour/skills/field.hpp"
@@ -50,7 +51,55 @@ std::vector<Obstacle> obstacles(const Blackboard& blackboard, const std::vector<
     const RRCoord rr = toRobotRelative(pos, static_cast<float>(info->robotX), static_cast<float>(info->robotY));
     found.push_back({rr.x(), rr.y()});
   }
+  for (const TouchedSector& sector : touchedSectors(motion))
+    found.push_back({exactZero(TOUCH_DIST * std::cos(sector.middle)), exactZero(TOUCH_DIST * std::sin(sector.middle))});
   return found;
+}
+
+float exactZero(float value) { return std::fabs(value) < 1e-3f ? 0.f : value; }
+
+std::vector<TouchedSector> touchedSectors(const MotionBlackboard& motion) {
+  const std::pair<bool, TouchedSector> sectors[] = {
+      {motion.touchFrontLeft, {TOUCH_FRONT_BEARING, TOUCH_FRONT_HALF_WIDTH}},
+      {motion.touchFrontRight, {-TOUCH_FRONT_BEARING, TOUCH_FRONT_HALF_WIDTH}},
+      {motion.touchLeft, {kPi / 2, TOUCH_SIDE_HALF_WIDTH}},
+      {motion.touchRight, {-kPi / 2, TOUCH_SIDE_HALF_WIDTH}},
+      {motion.touchBack, {kPi, TOUCH_SIDE_HALF_WIDTH}}};
+  std::vector<TouchedSector> touched;
+  for (const auto& [on, sector] : sectors)
+    if (on) touched.push_back(sector);
+  return touched;
+}
+
+WalkVelocity keepOffTouches(const MotionBlackboard& motion, float forward, float left) {
+  const float speed = std::hypot(forward, left);
+  const std::vector<TouchedSector> sectors = touchedSectors(motion);
+  if (speed < MIN_WALK_SPEED || sectors.empty()) return {forward, left};
+  std::vector<TouchedSector> reaches; // the directions closing on each sector
+  for (const TouchedSector& s : sectors) reaches.push_back({s.middle, s.halfWidth + kPi / 2});
+  const auto closes = [&](float direction) {
+    for (const TouchedSector& r : reaches)
+      if (std::fabs(normaliseTheta(direction - r.middle)) < r.halfWidth - 1e-4f) return true;
+    return false;
+  };
+  const float direction = std::atan2(left, forward);
+  if (!closes(direction)) return {forward, left};
+  bool any = false; // best: the edge turning the walk least; the first of equal turns (within 1e-4 rad) wins
+  float best = 0, bestOff = 0;
+  for (const TouchedSector& r : reaches) {
+    for (const float side : {-1.f, 1.f}) {
+      const float edge = r.middle + side * r.halfWidth;
+      if (closes(edge)) continue;
+      const float off = std::fabs(normaliseTheta(edge - direction));
+      if (!any || off < bestOff - 1e-4f) {
+        any = true;
+        best = edge;
+        bestOff = off;
+      }
+    }
+  }
+  if (!any) return {0.f, 0.f};
+  return clampWalk(speed * std::cos(best), speed * std::sin(best));
 }
 
 bool inOwnBox(float x, float y) {
@@ -126,16 +175,17 @@ ActionCommand::Body Avoid::tick(const Blackboard& blackboard, const ActionComman
   }
   lastUtime_ = utime;
   seen_ = remember(seen_, blackboard);
+  const std::vector<Obstacle> found = obstacles(blackboard, seen_);
   bool backing = backOffFrames_ > 0;
   WalkVelocity v{body.forward, body.left};
   if (backing) {
     --backOffFrames_;
   } else {
-    const std::vector<Obstacle> found = obstacles(blackboard, seen_);
     backing = blocked(found, body.forward, body.left, targetDist);
     if (!backing) v = steer(body.forward, body.left, found, targetDist);
   }
-  if (backing) v = {BACK_OFF_FORWARD, backOffLeft_};
+  if (backing) v = steer(BACK_OFF_FORWARD, backOffLeft_, found, AVOID_LOOKAHEAD);
+  v = keepOffTouches(blackboard.motion, v.forward, v.left);
   if (blackboard.gameController.playerNumber != GOALIE_PLAYER)
     v = keepOutOfOwnBox(blackboard.localisation.robotPos, v.forward, v.left);
   return actioncommand::walk(v.forward, v.left, backing ? 0.f : body.turn);
@@ -149,7 +199,8 @@ ActionCommand::Body Avoid::stand(const Blackboard& blackboard) {
   std::vector<Sighting> now; // not the remembered ones: they may have gone
   for (const Sighting& entry : seen_)
     if (entry.utime == blackboard.utime) now.push_back(entry);
-  for (const Obstacle& o : obstacles(blackboard, now)) {
+  const std::vector<Obstacle> found = obstacles(blackboard, now);
+  for (const Obstacle& o : found) {
     const float dist = std::hypot(o.x, o.y);
     if (o.x > 0.f && dist < YIELD_DIST && (!any || dist < nearestDist)) {
       any = true;
@@ -159,7 +210,8 @@ ActionCommand::Body Avoid::stand(const Blackboard& blackboard) {
     }
   }
   if (!any) return actioncommand::stand();
-  WalkVelocity v{-YIELD_SPEED * nearestX / nearestDist, -YIELD_SPEED * nearestY / nearestDist};
+  WalkVelocity v = steer(-YIELD_SPEED * nearestX / nearestDist, -YIELD_SPEED * nearestY / nearestDist, found, YIELD_DIST);
+  v = keepOffTouches(blackboard.motion, v.forward, v.left);
   if (blackboard.gameController.playerNumber != GOALIE_PLAYER)
     v = keepOutOfOwnBox(blackboard.localisation.robotPos, v.forward, v.left);
   return actioncommand::walk(v.forward, v.left);

@@ -156,6 +156,18 @@ struct GameInfo {
   int set_play_team = -1;            ///< the team taking it, 0 or 1; -1 with kNone
 };
 
+/// Which sides of a robot other robots touch: where a NAO feels a contact, its two foot
+/// bumpers at the front and its arms at the sides and back (B-Human's ArmContactModel reads
+/// an arm pushed off its path). A sector's bearing is from the robot's heading, + left.
+struct Touch {
+  bool front_left = false;  ///< 0 to 45 deg: the left foot bumper
+  bool front_right = false; ///< -45 to 0 deg: the right foot bumper
+  bool left = false;        ///< 45 to 135 deg: the left arm
+  bool right = false;       ///< -135 to -45 deg: the right arm
+  bool back = false;        ///< beyond 135 deg either way: an arm pushed forward
+  bool any() const { return front_left || front_right || left || right || back; }
+};
+
 /// What one robot senses at the start of a frame.
 struct RobotSense {
   RobotId id;
@@ -164,6 +176,7 @@ struct RobotSense {
   float ball_x_mm = 0, ball_y_mm = 0; ///< ground-truth ball, field frame
   std::vector<Observation> seen;      ///< the camera's observations this frame
   float sonar_left = 1, sonar_right = 1; ///< nearest obstacle, fraction of the sonar range (1: none)
+  Touch touch;                        ///< where other robots touch it this frame
   bool penalised = false;             ///< off the field, serving a penalty
   bool fallen = false;                ///< lying on the ground (getting up takes time)
   std::vector<TeamMessageFrame> messages; ///< teammates' messages arriving this frame

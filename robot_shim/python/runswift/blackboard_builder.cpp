@@ -124,6 +124,9 @@ void fill_motion(const api::Blackboard& t, MotionBlackboard& m) {
   const float range_m = t.motion.sonarRange_mm / 1000.f;
   s[SonarLeft] = t.motion.sonarLeft * range_m;
   s[SonarRight] = t.motion.sonarRight * range_m;
+  // A robot against a foot's front presses both of its bumpers (1: pressed).
+  s[LFoot_Bumper_Left] = s[LFoot_Bumper_Right] = t.motion.touchFrontLeft ? 1.f : 0.f;
+  s[RFoot_Bumper_Left] = s[RFoot_Bumper_Right] = t.motion.touchFrontRight ? 1.f : 0.f;
   s[InertialSensor_AngleY] = t.motion.fallen ? kHalfPi : 0.f; // lying: the body pitched a quarter turn
   s[Battery_Charge] = 1.f;
   m.uptime = static_cast<float>(t.utime) * 1e-6f;

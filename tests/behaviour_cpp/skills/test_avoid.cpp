@@ -74,6 +74,27 @@ TEST(Avoid, ObstaclesFromSonarCameraAndTeammates) {
   EXPECT_TRUE(obstacles(sonarBoard(pos, 1.f, 1.f)).empty());
 }
 
+TEST(Avoid, ATouchIsARobotAtItsSectorsBearing) {
+  Blackboard b = sonarBoard({}, 1.f, 1.f);
+  b.motion.touchFrontLeft = b.motion.touchBack = true;
+  const std::vector<Obstacle> found = obstacles(b);
+  ASSERT_EQ(found.size(), 2u);
+  EXPECT_NEAR(found[0].x, TOUCH_DIST * std::cos(TOUCH_FRONT_BEARING), 1e-3f);
+  EXPECT_NEAR(found[0].y, TOUCH_DIST * std::sin(TOUCH_FRONT_BEARING), 1e-3f);
+  EXPECT_NEAR(found[1].x, -TOUCH_DIST, 1e-3f);
+  EXPECT_NEAR(found[1].y, 0.f, 1e-3f);
+  Blackboard right = sonarBoard({}, 1.f, 1.f);
+  right.motion.touchFrontRight = true;
+  EXPECT_NEAR(obstacles(right)[0].y, -found[0].y, 1e-3f);
+  Blackboard sides = sonarBoard({}, 1.f, 1.f);
+  sides.motion.touchLeft = sides.motion.touchRight = true;
+  const std::vector<Obstacle> beside = obstacles(sides);
+  ASSERT_EQ(beside.size(), 2u);
+  EXPECT_NEAR(beside[0].x, 0.f, 1e-3f);
+  EXPECT_NEAR(beside[0].y, TOUCH_DIST, 1e-3f);
+  EXPECT_NEAR(beside[1].y, -TOUCH_DIST, 1e-3f);
+}
+
 TEST(Avoid, RobotsSeenAreRememberedForAWhileWhereTheyWere) {
   Blackboard seeing = sonarBoard({0.f, 0.f, 0.f}, 1.f, 1.f, 2, NOW);
   seeing.vision.robots = {seenRobot(700.f, 0.f)};
@@ -125,6 +146,42 @@ TEST(Avoid, ATouchingRobotIsSteppedPastSideways) {
   EXPECT_LT(v.left, 0.f);
 }
 
+// Walking forward and left into a robot against the left arm (45 to 135 deg): the walk keeps
+// its speed but turns to -45 deg, the nearest direction closing on no bearing of the arm's.
+TEST(Avoid, AWalkIntoARobotItFeelsButNeverSawTurnsAwayFromIt) {
+  const ActionCommand::Body walk = touchline::behaviour::actioncommand::walk(200.f, 200.f, 0.f);
+  const ActionCommand::Body free = Avoid().tick(sonarBoard({}, 1.f, 1.f, 2, NOW), walk, 2000.f);
+  EXPECT_NEAR(free.forward, 200.f, 1e-3f);
+  EXPECT_NEAR(free.left, 200.f, 1e-3f);
+  Blackboard touched = sonarBoard({}, 1.f, 1.f, 2, NOW);
+  touched.motion.touchLeft = true;
+  const ActionCommand::Body body = Avoid().tick(touched, walk, 2000.f);
+  EXPECT_NEAR(body.forward, 200.f, 1e-2f);
+  EXPECT_NEAR(body.left, -200.f, 1e-2f);
+}
+
+TEST(Avoid, AWalkClosingOnNoTouchedSectorIsLeftAlone) {
+  MotionBlackboard left;
+  left.touchLeft = true;
+  expectVelocity(keepOffTouches(left, 300.f, 0.f), 200.f, -200.f); // turned to -45 deg, clampWalk's
+  expectVelocity(keepOffTouches(left, 0.f, -200.f), 0.f, -200.f);
+  MotionBlackboard back;
+  back.touchBack = true;
+  expectVelocity(keepOffTouches(back, 300.f, 0.f), 300.f, 0.f);
+  expectVelocity(keepOffTouches(MotionBlackboard{}, 0.f, 200.f), 0.f, 200.f);
+}
+
+TEST(Avoid, PressedOnBothFootBumpersItStepsBackAndBoxedInItStops) {
+  MotionBlackboard bumpers;
+  bumpers.touchFrontLeft = bumpers.touchFrontRight = true;
+  const WalkVelocity v = keepOffTouches(bumpers, 200.f, 0.f);
+  EXPECT_NEAR(std::atan2(v.left, v.forward), 3 * kPi / 4, 1e-4f); // back left: the first of two equal turns
+  EXPECT_NEAR(std::hypot(v.forward, v.left), 200.f, 1e-2f);
+  MotionBlackboard boxed;
+  boxed.touchFrontLeft = boxed.touchLeft = boxed.touchRight = boxed.touchBack = true;
+  expectVelocity(keepOffTouches(boxed, 200.f, 0.f), 0.f, 0.f);
+}
+
 TEST(Avoid, RobotsOutOfTheWayAreLeftAlone) {
   expectVelocity(steer(300.f, 0.f, {{500.f, 450.f}}, 2000.f), 300.f, 0.f);  // off the line
   expectVelocity(steer(300.f, 0.f, {{900.f, 0.f}}, 2000.f), 300.f, 0.f);    // beyond the lookahead
@@ -151,6 +208,16 @@ TEST(Avoid, ARobotSeenOnceIsWalkedAroundAfterTheCameraLookedAway) {
 }
 
 // Making way
+TEST(Avoid, MakingWayNeverStepsBackIntoARobotTouchingTheBack) {
+  GoToPose goToPose(0.f, 0.f, 0.f);
+  Blackboard b = sonarBoard({}, 0.3f, 1.f, 2, NOW);
+  b.motion.touchBack = true;
+  const ActionCommand::Body body = goToPose.tick(b).body;
+  EXPECT_EQ(body.actionType, ActionCommand::ActionType::WALK);
+  EXPECT_GE(body.forward, 0.f);
+  EXPECT_LT(body.left, 0.f); // aside, away from the robot ahead on the left
+}
+
 TEST(Avoid, ARobotAtItsTargetStepsBackFromARobotAheadOfIt) {
   GoToPose goToPose(0.f, 0.f, 0.f);
   EXPECT_EQ(goToPose.tick(sonarBoard({}, 1.f, 1.f, 2, NOW)).body.actionType, ActionCommand::ActionType::STAND);
@@ -186,11 +253,14 @@ TEST(Avoid, TheGoalieAndARobotInTheBoxWalkAsAsked) {
 namespace {
 
 std::vector<ActionCommand::Body> run(Avoid& avoid, int frames, float sonarLeft = 0.3f, float sonarRight = 1.f,
-                                     int start = 0) {
+                                     int start = 0, bool touchBack = false) {
   const ActionCommand::Body walk = touchline::behaviour::actioncommand::walk(300.f, 0.f, 0.f);
   std::vector<ActionCommand::Body> bodies;
-  for (int i = 0; i < frames; ++i)
-    bodies.push_back(avoid.tick(sonarBoard({}, sonarLeft, sonarRight, 2, NOW + (start + i) * FRAME_US), walk, 2000.f));
+  for (int i = 0; i < frames; ++i) {
+    Blackboard b = sonarBoard({}, sonarLeft, sonarRight, 2, NOW + (start + i) * FRAME_US);
+    b.motion.touchBack = touchBack;
+    bodies.push_back(avoid.tick(b, walk, 2000.f));
+  }
   return bodies;
 }
 
@@ -212,6 +282,13 @@ TEST(Avoid, AnObstacleOnTheRightIsBackedOffToTheLeft) {
   const auto bodies = run(avoid, BLOCKED_FRAMES, 1.f, 0.3f);
   EXPECT_LT(bodies.back().forward, 0.f);
   EXPECT_GT(bodies.back().left, 0.f);
+}
+
+TEST(Avoid, BackingOffNeverStepsBackIntoARobotTouchingTheBack) {
+  Avoid avoid;
+  const auto bodies = run(avoid, BLOCKED_FRAMES, 0.3f, 1.f, 0, true);
+  EXPECT_GE(bodies.back().forward, 0.f);
+  EXPECT_LT(bodies.back().left, 0.f); // aside, still away from the left
 }
 
 TEST(Avoid, ProgressOrAClearWayIsNoBlock) {

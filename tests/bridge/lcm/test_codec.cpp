@@ -118,6 +118,7 @@ TEST(Codec, SenseSurvivesEncodeAndDecode) {
   second.id = {1, 4};
   second.active = false;
   second.truth = {300, -200, -2.f};
+  second.touch.front_right = second.touch.back = true;
   in.robots = {first, second};
   const auto bytes = encode(transport::to_lcm(in));
   sense_t msg;
@@ -128,6 +129,10 @@ TEST(Codec, SenseSurvivesEncodeAndDecode) {
   ASSERT_EQ(out.robots.size(), 2u);
   EXPECT_FALSE(out.find({1, 4})->active);
   EXPECT_EQ(out.find({0, 1})->truth.y_mm, 200);
+  EXPECT_FALSE(out.find({0, 1})->touch.any());
+  const Touch touch = out.find({1, 4})->touch;
+  EXPECT_TRUE(touch.front_right && touch.back);
+  EXPECT_FALSE(touch.front_left || touch.left || touch.right);
   EXPECT_EQ(out.find({0, 2}), nullptr);
 }
 

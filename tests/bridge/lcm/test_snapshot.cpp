@@ -26,6 +26,7 @@ api::Blackboard sample() {
   bb.motion.sonarLeft = 0.4f;
   bb.motion.sonarRight = 0.9f;
   bb.motion.sonarRange_mm = 1200;
+  bb.motion.touchLeft = true;
   bb.localisation.robotPos = {-1000, 500, 1.5f};
   bb.localisation.ballPos = {200, 100, 0};
   bb.localisation.ballPosRR = {1250, -0.75f};
@@ -82,6 +83,8 @@ TEST(Snapshot, BlackboardSurvivesEncodeAndDecode) {
   EXPECT_EQ(out.motion.sonarLeft, 0.4f);
   EXPECT_EQ(out.motion.sonarRight, 0.9f);
   EXPECT_EQ(out.motion.sonarRange_mm, 1200);
+  EXPECT_TRUE(out.motion.touchLeft);
+  EXPECT_FALSE(out.motion.touchFrontLeft || out.motion.touchFrontRight || out.motion.touchRight || out.motion.touchBack);
   ASSERT_EQ(out.vision.robots.size(), 2u);
   EXPECT_EQ(out.vision.robots[0].rr.distance, 600);
   EXPECT_EQ(out.vision.robots[0].id, 4);

@@ -153,6 +153,7 @@ TEST_F(PythonRobot, PythonSeesWhatTheAdaptersWroteToTheBlackboard) {
   install("probe.py");
   start();
   next_frame_ = 5;
+  sense_.touch.right = true; // a robot against the right arm
   step();
   const Blackboard& bb = robot_->blackboard();
   const auto seen = module().attr("SEEN").cast<py::dict>();
@@ -171,6 +172,8 @@ TEST_F(PythonRobot, PythonSeesWhatTheAdaptersWroteToTheBlackboard) {
   EXPECT_EQ(seen["team"].cast<int>(), 0);
   EXPECT_EQ(seen["state"].cast<int>(), static_cast<int>(api::GameState::PLAYING));
   EXPECT_TRUE(seen["ballSeen"].cast<bool>());
+  const auto touch = seen["touch"].cast<std::tuple<bool, bool, bool, bool, bool>>();
+  EXPECT_EQ(touch, std::make_tuple(false, false, false, true, false)); // front left, front right, left, right, back
   // The behaviour ticks before the frame's motion ticks; none ran before this first frame.
   EXPECT_EQ(seen["motionTicks"].cast<int64_t>(), 0);
   const auto& body = bb.behaviour.request.body;

@@ -22,6 +22,10 @@ struct MotionBlackboard {
   int64_t ticks = 0;                 ///< motion ticks run
   float sonarLeft = 1, sonarRight = 1; ///< nearest obstacle, fraction of sonarRange_mm (1: none within it)
   float sonarRange_mm = 1000;        ///< the sonars' range, mm (the world's [sonar] range_mm)
+  /// Where another robot touches this one, by its bearing from the heading (+ left): the foot
+  /// bumpers ahead (0 to 45 deg left, 0 to 45 deg right), the arms beside (45 to 135 deg) and
+  /// behind (beyond 135 deg).
+  bool touchFrontLeft = false, touchFrontRight = false, touchLeft = false, touchRight = false, touchBack = false;
 };
 
 /// Written by the localisation adapter (every perception frame).

@@ -18,8 +18,9 @@ void write_game_controller(const SenseFrame& frame, const RobotSense& sense, api
 /// ball seen, if any; the goal posts, numbered in our own frame, and the robots seen).
 void write_vision(const SenseFrame& frame, const RobotSense& sense, api::Blackboard& blackboard);
 
-/// Reads: whether the robot lies on the ground, the sonars. Writes: blackboard.motion.fallen,
-/// sonarLeft, sonarRight.
+/// Reads: whether the robot lies on the ground, the sonars, the touch sensors. Writes:
+/// blackboard.motion.fallen, sonarLeft, sonarRight, touchFrontLeft, touchFrontRight,
+/// touchLeft, touchRight, touchBack.
 void write_fall(const RobotSense& sense, api::Blackboard& blackboard);
 
 /// Reads: teammates' messages arriving this frame. Writes: blackboard.receiver (the

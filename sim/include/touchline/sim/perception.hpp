@@ -35,6 +35,7 @@ struct Percept {
   RobotId id;
   std::vector<Observation> seen; ///< observe()'s order
   SonarReading sonar;
+  Touch touch;
 };
 
 class Perception {
@@ -54,7 +55,10 @@ class Perception {
   /// if configured, the goal posts; Gaussian noise on readings that see something.
   SonarReading sonar(const Viewer& me, const std::vector<Viewer>& robots, int64_t frame) const;
 
-  /// observe() and sonar() for each robot in `robots`.
+  /// Where the other robots in `robots` touch `me` (sim/touch.hpp): no noise, no misses.
+  Touch touch(const Viewer& me, const std::vector<Viewer>& robots) const;
+
+  /// observe(), sonar() and touch() for each robot in `robots`.
   std::vector<Percept> perceive(const std::vector<Viewer>& robots, const BallTruth& ball, int64_t frame) const;
 
   const std::vector<Landmark>& landmarks() const { return landmarks_; }

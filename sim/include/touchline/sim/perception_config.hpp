@@ -5,6 +5,7 @@
 #include "touchline/ini.hpp"
 #include "touchline/sim/camera.hpp"
 #include "touchline/sim/sonar.hpp"
+#include "touchline/sim/touch.hpp"
 
 namespace touchline::sim {
 
@@ -42,9 +43,10 @@ struct PerceptionDef {
   float sonar_noise_sd_mm = 0.f;    ///< mm
   /// [sonar] Whether the goal posts echo as well as other robots' bodies.
   bool sonar_sees_goal_posts = true;
+  TouchDef touch;                   ///< [touch]: foot bumpers and arm contact
 };
 
-/// Binds [camera], [noise] and [sonar] keys (e.g. "noise.ball_miss_probability").
+/// Binds [camera], [noise], [sonar] and [touch] keys (e.g. "noise.ball_miss_probability").
 void bind(IniSchema& schema, PerceptionDef& def);
 
 /// Checks ranges (probabilities in [0, 1], non-negative noise, a field of view in

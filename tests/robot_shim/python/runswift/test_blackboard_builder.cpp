@@ -128,6 +128,12 @@ TEST(BlackboardBuilder, MotionSensorsInTheirUnits) {
   EXPECT_NEAR(bb.motion.uptime, 12.345678f, 1e-4);
   t.motion.fallen = true;
   EXPECT_GT(builder.build(t).motion.sensors.sensors[InertialSensor_AngleY], 1.5f);
+  EXPECT_FLOAT_EQ(s.sensors[LFoot_Bumper_Left] + s.sensors[RFoot_Bumper_Right], 0); // nothing touches
+  t.motion.touchFrontLeft = true; // a robot against the left foot's front
+  const auto& pressed = builder.build(t).motion.sensors.sensors;
+  EXPECT_FLOAT_EQ(pressed[LFoot_Bumper_Left], 1);
+  EXPECT_FLOAT_EQ(pressed[LFoot_Bumper_Right], 1);
+  EXPECT_FLOAT_EQ(pressed[RFoot_Bumper_Left], 0);
 }
 
 TEST(BlackboardBuilder, GameControllerDataInTheirNumbers) {

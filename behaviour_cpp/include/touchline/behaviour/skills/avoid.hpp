@@ -3,8 +3,9 @@
 // off when blocked; the port of behaviour_py/skills/avoid.py. GoToPose passes every walk it
 // asks for through Avoid::tick.
 //
-// Reads: motion.sonarLeft/sonarRight/sonarRange_mm, vision.robots, receiver.messages (the
-// teammates' poses), localisation.robotPos, gameController.playerNumber, utime. Writes nothing.
+// Reads: motion.sonarLeft/sonarRight/sonarRange_mm, motion.touch* (the foot bumpers and arms),
+// vision.robots, receiver.messages (the teammates' poses), localisation.robotPos,
+// gameController.playerNumber, utime. Writes nothing.
 //
 // Obstacles, robot frame (x forward, y left), from what a robot really has:
 // - the sonars (thesis Algorithm 2.4): a reading under 1 is a body that far ahead in the left
@@ -12,7 +13,16 @@
 // - the robots the camera saw, remembered in the field frame for SEEN_MEMORY_US (the head
 //   follows the ball, so a robot beside the walk is seen now and then); a sighting replaces
 //   those remembered within SEEN_MERGE_DIST of it;
-// - the teammates' own poses from their team messages (fresh, not penalised).
+// - the teammates' own poses from their team messages (fresh, not penalised);
+// - a touch (a robot against the foot bumpers or an arm, which the camera may never have seen:
+//   it looks at the ball, and most robots walked into are beside or behind), a body TOUCH_DIST
+//   away at its sector's middle: TOUCH_FRONT_BEARING either side ahead, beside, behind.
+//
+// Off a touch: a sensor only tells the sector (TOUCH_FRONT_HALF_WIDTH, TOUCH_SIDE_HALF_WIDTH
+// either side of its middle), and a robot at its edge is pushed by a walk that passes its
+// middle. So a walk that closes on any bearing of a touched sector (less than 90 deg from it)
+// turns, its speed kept, to the nearest direction that closes on none; it stops if every
+// direction does. This comes after the steering and the backing off, before the own goal box.
 //
 // Around robots (a tangent rule): the nearest obstacle ahead on the walk's line, within
 // AVOID_LOOKAHEAD and nearer than the target, and less than AVOID_CLEARANCE off the line,
@@ -33,7 +43,8 @@
 // Back off: a walk that for BLOCKED_FRAMES frames in a row has an obstacle within
 // BLOCKED_OBSTACLE_DIST in the way and gets less than BLOCKED_PROGRESS closer to its target
 // becomes BACK_OFF_FRAMES frames of stepping back and aside, away from that obstacle. Frames
-// count while the walk is asked for every frame (utime at most FRAME_GAP_US apart).
+// count while the walk is asked for every frame (utime at most FRAME_GAP_US apart). Backing off
+// and making way are steered round the obstacles too, so neither steps into a robot behind.
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -60,11 +71,21 @@ inline constexpr int SEEN_MEMORY_US = 1500000;         ///< us: a robot the came
 inline constexpr float SEEN_MERGE_DIST = 400.f;        ///< mm: a sighting replaces remembered robots this near it
 inline constexpr float YIELD_DIST = 400.f;             ///< mm: a standing robot makes way for one ahead this near ...
 inline constexpr float YIELD_SPEED = 150.f;            ///< mm/s: ... stepping straight away from it
+inline constexpr float TOUCH_DIST = 200.f;             ///< mm: a robot felt by touch is this far ...
+inline constexpr float TOUCH_FRONT_BEARING = api::kPi / 8; ///< rad: ... at this bearing either side ahead (a foot bumper's middle)
+inline constexpr float TOUCH_FRONT_HALF_WIDTH = api::kPi / 8; ///< rad: a foot bumper feels this far either side of its middle
+inline constexpr float TOUCH_SIDE_HALF_WIDTH = api::kPi / 4;  ///< rad: an arm (beside, behind) this far
 
 /// A point in the robot frame, mm (x forward, y left).
 struct Obstacle {
   float x = 0;
   float y = 0;
+};
+
+/// A sector of the robot in which another robot touches it, rad, robot frame.
+struct TouchedSector {
+  float middle = 0;
+  float halfWidth = 0;
 };
 
 /// A robot the camera saw, field frame.
@@ -82,6 +103,14 @@ std::vector<Obstacle> obstacles(const api::Blackboard& blackboard, const std::ve
 bool inOwnBox(float x, float y);
 /// The walk (forward, left) turned onto the tangent past the nearest obstacle in its way.
 WalkVelocity steer(float forward, float left, const std::vector<Obstacle>& found, float targetDist);
+/// value, or 0 within 1e-3 of it: cos(pi / 2) is 6e-17 in a double and -4e-8 in a float, and
+/// a touch beside must be neither ahead nor behind in both ports.
+float exactZero(float value);
+/// The sectors in which a robot touches this one (motion.touch*).
+std::vector<TouchedSector> touchedSectors(const api::MotionBlackboard& motion);
+/// The walk (forward, left) turned to the nearest direction that closes on no touched sector,
+/// its speed kept; (0, 0) when every direction closes on one.
+WalkVelocity keepOffTouches(const api::MotionBlackboard& motion, float forward, float left);
 /// The walk (forward, left) less its part into the own goal box when it would enter it.
 WalkVelocity keepOutOfOwnBox(const api::AbsCoord& pos, float forward, float left);
 /// The nearest obstacle within BLOCKED_OBSTACLE_DIST that the walk heads towards, if any.
