@@ -300,10 +300,14 @@ struct World::Impl {
   /// walk's own (a turning walk's feet open ~0.83 rad). The bound is the walk's twist, not
   /// the twist before the tick plus the walk's turn in it: that ratchets, a contact's excess
   /// kept whenever the walk turned the same way, up to the feet pi apart.
+  /// The legs' own limit holds even the walk's twist: a Nao's hip yaw-pitch joint turns its
+  /// feet apart by at most 65.6 deg (1.15 rad). A walk whose state parted from the feet (it
+  /// was mid-turn when the referee put the robot down) could otherwise twist them pi apart.
   void hold_twist(const Robot& r) const {
     constexpr float kSolverSlack_rad = 1e-4f; // the solver's rounding on an untouched foot: no correction
+    constexpr float kLegTwistLimit_rad = 1.15f;
     const float twist = twist_of(r);
-    const float bound = std::max(physics.max_foot_twist_rad, std::fabs(r.walk_twist_rad));
+    const float bound = std::max(physics.max_foot_twist_rad, std::min(std::fabs(r.walk_twist_rad), kLegTwistLimit_rad));
     if (std::fabs(twist) <= bound + kSolverSlack_rad) return;
     const float excess = 0.5f * (twist - std::copysign(bound, twist));
     r.left->SetTransform(r.left->GetPosition(), r.left->GetAngle() + excess);

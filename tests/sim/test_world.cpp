@@ -523,12 +523,13 @@ TEST(World, TheLegsHoldTheFeetsHeadingsTogetherAgainstAContact) {
   EXPECT_GT(shoved(free).jump, 3.f) << "without the limit, the body flips about (the case the limit is for)";
 }
 
-// The walk's own turn is never held: a foot turned by its command, 5 rad over 100 ticks, turns
-// exactly as far with the limit as without it (a turning walk opens the feet ~0.83 rad).
+// The walk's own turn is never held within the legs' reach: a foot turned by its command, 1 rad
+// over 100 ticks, turns exactly as far with the limit as without it (a turning walk opens the
+// feet ~0.83 rad).
 TEST(World, TheLegsLeaveTheWalksOwnTwistAlone) {
   PhysicsDef physics;
   TickMotion turn;
-  turn.left.dtheta_rad = 0.05f;
+  turn.left.dtheta_rad = 0.01f;
   PhysicsDef free = physics;
   free.max_foot_twist_rad = 0;
   World held(FieldDef{}, physics), loose(FieldDef{}, free);
@@ -566,6 +567,23 @@ TEST(World, TheLegsHoldAContactsTwistWhileTheWalkTurns) {
     worst = std::max(worst, std::fabs(normalise_angle(r.right_foot.theta_rad - r.left_foot.theta_rad)));
   }
   EXPECT_LE(worst, physics.max_foot_twist_rad + 1e-3f);
+}
+
+// Even the walk cannot turn the feet further apart than a Nao's hip joint can (1.15 rad): a
+// walk that asks for 5 rad over 100 ticks has the feet held at the joint's limit.
+TEST(World, TheWalksOwnTwistStopsAtTheLegsLimit) {
+  World world(FieldDef{}, PhysicsDef{});
+  world.add_robot(kRed1, Pose2D{0, 0, 0});
+  park_ball(world);
+  TickMotion turn;
+  turn.left.dtheta_rad = 0.05f;
+  float worst = 0;
+  for (int t = 0; t < 100; ++t) {
+    world.step({turn});
+    const RobotTruth r = world.robot(0);
+    worst = std::max(worst, std::fabs(normalise_angle(r.right_foot.theta_rad - r.left_foot.theta_rad)));
+  }
+  EXPECT_NEAR(worst, 1.15f, 1e-3f);
 }
 
 // --- determinism ------------------------------------------------------------------------
