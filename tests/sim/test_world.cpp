@@ -472,6 +472,9 @@ TEST(World, AFootCommandedBeyondTheLegsDragsTheOther) {
   EXPECT_GT(world.robot(0).right_foot.y_mm, -50.f + 100.f) << "the right foot was dragged along";
 }
 
+/// How far apart the feet's headings are, rad (0 to pi).
+float feet_twist(const RobotTruth& r) { return std::fabs(normalise_angle(r.right_foot.theta_rad - r.left_foot.theta_rad)); }
+
 /// What robot 0's feet did in a run: the largest jump of its body heading between two ticks,
 /// and the largest twist (one foot's heading less the other's) at any tick.
 struct TwistRun {
@@ -494,7 +497,7 @@ TwistRun run_feet(const PhysicsDef& physics, const TickMotion& own, const Pose2D
     else world.step({own});
     const RobotTruth r = world.robot(0);
     run.jump = std::max(run.jump, std::fabs(normalise_angle(r.body.theta_rad - heading)));
-    run.twist = std::max(run.twist, std::fabs(normalise_angle(r.right_foot.theta_rad - r.left_foot.theta_rad)));
+    run.twist = std::max(run.twist, feet_twist(r));
     heading = r.body.theta_rad;
   }
   return run;
@@ -564,7 +567,7 @@ TEST(World, TheLegsHoldAContactsTwistWhileTheWalkTurns) {
     turn.right.dtheta_rad = (t / 30) % 2 == 0 ? 0.02f : -0.02f; // 0 -> 0.6 rad -> 0, every 60 ticks
     world.step({turn, drive});
     const RobotTruth r = world.robot(0);
-    worst = std::max(worst, std::fabs(normalise_angle(r.right_foot.theta_rad - r.left_foot.theta_rad)));
+    worst = std::max(worst, feet_twist(r));
   }
   EXPECT_LE(worst, physics.max_foot_twist_rad + 1e-3f);
 }
@@ -581,7 +584,7 @@ TEST(World, TheWalksOwnTwistStopsAtTheLegsLimit) {
   for (int t = 0; t < 100; ++t) {
     world.step({turn});
     const RobotTruth r = world.robot(0);
-    worst = std::max(worst, std::fabs(normalise_angle(r.right_foot.theta_rad - r.left_foot.theta_rad)));
+    worst = std::max(worst, feet_twist(r));
   }
   EXPECT_NEAR(worst, 1.15f, 1e-3f);
 }

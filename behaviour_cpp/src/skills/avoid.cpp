@@ -12,6 +12,14 @@ namespace touchline::behaviour::skills {
 
 using namespace api;
 
+namespace {
+
+/// value, or 0 within 1e-3 of it: cos(pi / 2) is 6e-17 in a double and -4e-8 in a float, and
+/// a touch beside must be neither ahead nor behind in both ports.
+float exactZero(float value) { return std::fabs(value) < 1e-3f ? 0.f : value; }
+
+} // namespace
+
 std::vector<Sighting> remember(const std::vector<Sighting>& seen, const Blackboard& blackboard) {
   const int64_t utime = blackboard.utime;
   const AbsCoord pos = blackboard.localisation.robotPos;
@@ -55,8 +63,6 @@ std::vector<Obstacle> obstacles(const Blackboard& blackboard, const std::vector<
     found.push_back({exactZero(TOUCH_DIST * std::cos(sector.middle)), exactZero(TOUCH_DIST * std::sin(sector.middle))});
   return found;
 }
-
-float exactZero(float value) { return std::fabs(value) < 1e-3f ? 0.f : value; }
 
 std::vector<TouchedSector> touchedSectors(const MotionBlackboard& motion) {
   const std::pair<bool, TouchedSector> sectors[] = {

@@ -103,9 +103,6 @@ std::vector<Obstacle> obstacles(const api::Blackboard& blackboard, const std::ve
 bool inOwnBox(float x, float y);
 /// The walk (forward, left) turned onto the tangent past the nearest obstacle in its way.
 WalkVelocity steer(float forward, float left, const std::vector<Obstacle>& found, float targetDist);
-/// value, or 0 within 1e-3 of it: cos(pi / 2) is 6e-17 in a double and -4e-8 in a float, and
-/// a touch beside must be neither ahead nor behind in both ports.
-float exactZero(float value);
 /// The sectors in which a robot touches this one (motion.touch*).
 std::vector<TouchedSector> touchedSectors(const api::MotionBlackboard& motion);
 /// The walk (forward, left) turned to the nearest direction that closes on no touched sector,
