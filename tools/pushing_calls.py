@@ -12,7 +12,12 @@ ball, how long the pair had been in contact (body centres closer than CONTACT_MM
 the call came, each robot's role (its last team message before the call: team_comm.py's
 byte 2, as match_stats.py reads it) and where the victim was as the pusher faced
 (victim_bearing_deg, 0 straight ahead: within SENSED_BEARING_DEG the sonars and the middle
-of the camera's view can see it, so avoidance can act).
+of the camera's view can see it, so avoidance can act); how long before the call the victim
+was last inside the pusher's camera view (victim_in_view_s_ago: the cone of the log's
+TL_MATCH camera field of view about the heading plus the head yaw the pusher's TL_ACT
+reported, out to the camera's farthest reach; misses and occlusion not counted; None: not
+within HISTORY_S); and which way the pusher's body moved over the last 0.5 s, from its
+heading (pusher_moving_deg, 0 forward, 90 to its left, 180 backwards; None if it stood).
 
   tools/pushing_calls.py LOG... [--calls calls.jsonl]
 """
@@ -33,6 +38,9 @@ CONTACT_MM = 300.0        # rules.contact_distance_mm's default
 WINDOWS_S = (0.25, 0.5, 1.0)
 HISTORY_S = 10.0          # truth kept per robot: enough to time a long contact
 SENSED_BEARING_DEG = 30.0  # deg: a victim this far off the pusher's heading is in its sonars' and camera's middle
+CAMERA_FOV_RAD = math.radians(60)   # the camera's cone and ...
+CAMERA_REACH_MM = 4000.0            # ... farthest reach when the log has no TL_MATCH (the defaults)
+SIDEWAYS_DEG = 45.0                 # deg: a pusher moving more than this off its heading walked sideways or backwards
 
 
 def towards(h: list, other: tuple, window_s: float) -> float | None:
@@ -52,9 +60,29 @@ def towards(h: list, other: tuple, window_s: float) -> float | None:
     return ((x1 - x0) * dx + (y1 - y0) * dy) / n / ((t1 - t0) * 1e-6)
 
 
+def moving_deg(h: list, theta: float, window_s: float = 0.5) -> float | None:
+    """Which way the robot whose (utime, x, y) samples end `h`, now heading `theta`, moved over
+    the last window_s, deg from its heading (+ left), or None if it moved under 10 mm."""
+    t1, x1, y1 = h[-1]
+    older = [s for s in h if s[0] <= t1 - window_s * 1e6]
+    if not older:
+        return None
+    _, x0, y0 = older[-1]
+    if math.hypot(x1 - x0, y1 - y0) < 10:
+        return None
+    return math.degrees(math.remainder(math.atan2(y1 - y0, x1 - x0) - theta, 2 * math.pi))
+
+
+def in_view(viewer, other, head_yaw: float, fov_rad: float, reach_mm: float) -> bool:
+    """Whether robot truth `other` stands in the camera cone of robot truth `viewer`."""
+    dx, dy = other.body.x_mm - viewer.body.x_mm, other.body.y_mm - viewer.body.y_mm
+    bearing = math.remainder(math.atan2(dy, dx) - viewer.body.theta_rad - head_yaw, 2 * math.pi)
+    return abs(bearing) <= fov_rad / 2 and math.hypot(dx, dy) <= reach_mm
+
+
 def analyse(log: Path) -> list[dict]:
     import lcm
-    from touchline import act_t, match_event_t, world_truth_t
+    from touchline import act_t, match_config_t, match_event_t, world_truth_t
 
     history: dict[tuple, list] = {}   # (team, player) -> [(utime, x, y)] while on the field
     contact_since: dict[tuple, int] = {}  # (id, id) sorted -> utime contact began
@@ -65,9 +93,16 @@ def analyse(log: Path) -> list[dict]:
     contact_before: dict[tuple, int] = {}
     calls = []
     roles: dict[tuple, str] = {}  # (team, player) -> the role of its last team message
+    head_yaw: dict[tuple, float] = {}  # (team, player) -> its last reported head yaw, rad
+    fov_rad, reach_mm = CAMERA_FOV_RAD, CAMERA_REACH_MM
+    seen_at: dict[tuple, int] = {}  # (viewer id, other id) -> utime the other was last in the viewer's view
     for event in lcm.EventLog(str(log), "r"):
-        if event.channel.startswith("TL_ACT_"):
+        if event.channel == "TL_MATCH":
+            config = match_config_t.decode(event.data)
+            fov_rad, reach_mm = config.camera_field_of_view_rad, config.camera_near_range_mm + config.camera_range_span_mm
+        elif event.channel.startswith("TL_ACT_"):
             act = act_t.decode(event.data)
+            head_yaw[(act.team, act.player)] = act.head_yaw_rad
             if role := message_role(act):
                 roles[(act.team, act.player)] = role
         elif event.channel == "TL_TRUTH":
@@ -82,6 +117,10 @@ def analyse(log: Path) -> list[dict]:
                 h = history.get(key, [])
                 while h and h[0][0] < truth.utime - HISTORY_S * 1e6:
                     del h[0]
+            for a in on:
+                for b in on:
+                    if a is not b and in_view(a, b, head_yaw.get((a.team, a.player), 0.0), fov_rad, reach_mm):
+                        seen_at[((a.team, a.player), (b.team, b.player))] = truth.utime
             for i, a in enumerate(on):
                 for b in on[i + 1:]:
                     key = ((a.team, a.player), (b.team, b.player))
@@ -122,6 +161,10 @@ def analyse(log: Path) -> list[dict]:
             for w in WINDOWS_S:
                 call[f"pusher_towards_{w}"] = towards(hp, (v.body.x_mm, v.body.y_mm), w) if hp else None
                 call[f"victim_towards_{w}"] = towards(hv, (p.body.x_mm, p.body.y_mm), w) if hv else None
+            seen = seen_at.get((pkey, vkey))
+            call["victim_in_view_s_ago"] = (
+                (last.utime - seen) * 1e-6 if seen is not None and last.utime - seen <= HISTORY_S * 1e6 else None)
+            call["pusher_moving_deg"] = moving_deg(hp, p.body.theta_rad) if hp else None
             calls.append(call)
     if current is None:
         raise ValueError("holds no TL_TRUTH: not a match log")
@@ -163,6 +206,12 @@ def summarise(calls: list) -> None:
           share(calls, lambda c: c["pusher_ball_mm"] < 700 and c["victim_ball_mm"] < 700))
     print(f"victim within {SENSED_BEARING_DEG:.0f} deg of the pusher's heading:",
           share(calls, lambda c: abs(c["victim_bearing_deg"]) <= SENSED_BEARING_DEG))
+    print("victim in the pusher's camera view within 1.5 s before the call:",
+          share(calls, lambda c: c["victim_in_view_s_ago"] is not None and c["victim_in_view_s_ago"] <= 1.5))
+    print("... within 3 s:",
+          share(calls, lambda c: c["victim_in_view_s_ago"] is not None and c["victim_in_view_s_ago"] <= 3.0))
+    print(f"pusher moving sideways or backwards (over {SIDEWAYS_DEG:.0f} deg off its heading, last 0.5 s):",
+          share(calls, lambda c: c["pusher_moving_deg"] is not None and abs(c["pusher_moving_deg"]) > SIDEWAYS_DEG))
     for role in sorted({c["pusher_role"] for c in calls}):
         print(f"pusher's role {role or '(none)'}:", share(calls, lambda c, r=role: c["pusher_role"] == r))
 

@@ -91,3 +91,20 @@ def test_a_call_names_both_roles_and_where_the_victim_stood(tmp_path):
     assert (call["pusher_role"], call["victim_role"]) == ("striker", "defender")
     assert abs(call["victim_bearing_deg"] - 90.0) < 1.0
     assert abs(call["pusher_towards_0.5"] - 150.0) < 1.0
+    # It walked to its left; its head looked ahead (yaw 0), so the victim was never in view.
+    assert abs(call["pusher_moving_deg"] - 90.0) < 1.0
+    assert call["victim_in_view_s_ago"] is None
+
+
+def test_a_robot_is_in_view_within_the_cone_about_the_head_and_within_reach():
+    from types import SimpleNamespace as NS
+
+    def truth(x, y, theta):
+        return NS(body=NS(x_mm=x, y_mm=y, theta_rad=theta))
+
+    me = truth(0.0, 0.0, 0.0)
+    fov, reach = math.radians(60), 4000.0
+    assert pushing_calls.in_view(me, truth(1000.0, 500.0, 0.0), 0.0, fov, reach)        # 27 deg left
+    assert not pushing_calls.in_view(me, truth(1000.0, 700.0, 0.0), 0.0, fov, reach)    # 35 deg left
+    assert pushing_calls.in_view(me, truth(0.0, 1000.0, 0.0), math.pi / 2, fov, reach)  # head turned to it
+    assert not pushing_calls.in_view(me, truth(4500.0, 0.0, 0.0), 0.0, fov, reach)      # beyond reach
