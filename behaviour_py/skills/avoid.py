@@ -174,18 +174,18 @@ def keepOffTouches(motion, forward, left):
     sectors = touchedSectors(motion)
     if speed < MIN_WALK_SPEED or not sectors:
         return forward, left
-    reaches = [(middle, half + math.pi / 2) for middle, half in sectors]  # directions closing on it
 
-    def closes(direction):
-        return any(abs(robot.normaliseTheta(direction - middle)) < reach - 1e-4 for middle, reach in reaches)
+    def closes(direction):  # less than 90 deg from some bearing of a touched sector
+        return any(abs(robot.normaliseTheta(direction - middle)) < half + math.pi / 2 - 1e-4
+                   for middle, half in sectors)
 
     direction = math.atan2(left, forward)
     if not closes(direction):
         return forward, left
     best = None  # (edge, how far it turns the walk): the first of equal turns (within 1e-4 rad) wins
-    for middle, reach in reaches:
+    for middle, half in sectors:
         for side in (-1.0, 1.0):
-            edge = middle + side * reach
+            edge = middle + side * (half + math.pi / 2)
             if closes(edge):
                 continue
             off = abs(robot.normaliseTheta(edge - direction))

@@ -6,8 +6,8 @@ robot that must end facing the other way: a defender falling back, facing the ba
 Algorithm 4.3: turn on the spot while the heading is off by more than TURN_FIRST_ANGLE, else
 walk the forward/left decomposition of the target while turning to the target heading.
 Which is faster is estimated from the walk's limits (directTime, forwardFirstTime).
-Arrived (with hysteresis): stand, making way for a robot ahead. Every walk goes through Avoid (avoid.py): around robots, out of the
-own goal box, backing off when blocked.
+Arrived (with hysteresis): stand, making way for a robot ahead. Every walk goes through Avoid
+(avoid.py): around robots, out of the own goal box, backing off when blocked.
 """
 import math
 

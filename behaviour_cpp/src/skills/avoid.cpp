@@ -81,20 +81,19 @@ WalkVelocity keepOffTouches(const MotionBlackboard& motion, float forward, float
   const float speed = std::hypot(forward, left);
   const std::vector<TouchedSector> sectors = touchedSectors(motion);
   if (speed < MIN_WALK_SPEED || sectors.empty()) return {forward, left};
-  std::vector<TouchedSector> reaches; // the directions closing on each sector
-  for (const TouchedSector& s : sectors) reaches.push_back({s.middle, s.halfWidth + kPi / 2});
-  const auto closes = [&](float direction) {
-    for (const TouchedSector& r : reaches)
-      if (std::fabs(normaliseTheta(direction - r.middle)) < r.halfWidth - 1e-4f) return true;
+  const auto reach = [](const TouchedSector& s) { return s.halfWidth + kPi / 2; }; // the directions closing on it
+  const auto closes = [&](float direction) { // less than 90 deg from some bearing of a touched sector
+    for (const TouchedSector& s : sectors)
+      if (std::fabs(normaliseTheta(direction - s.middle)) < reach(s) - 1e-4f) return true;
     return false;
   };
   const float direction = std::atan2(left, forward);
   if (!closes(direction)) return {forward, left};
   bool any = false; // best: the edge turning the walk least; the first of equal turns (within 1e-4 rad) wins
   float best = 0, bestOff = 0;
-  for (const TouchedSector& r : reaches) {
+  for (const TouchedSector& s : sectors) {
     for (const float side : {-1.f, 1.f}) {
-      const float edge = r.middle + side * r.halfWidth;
+      const float edge = s.middle + side * reach(s);
       if (closes(edge)) continue;
       const float off = std::fabs(normaliseTheta(edge - direction));
       if (!any || off < bestOff - 1e-4f) {

@@ -124,13 +124,14 @@ struct SetPlayChange {
   int64_t utime = 0;
 };
 
-/// What one update decided, in the order it happened. Placements are in the order to
-/// apply them (a robot may appear twice: the later wins).
+/// A ball contest's loser, held for a frame (thesis 2.2.4).
 struct ContestStop {
   RobotId robot;  ///< lost a ball contest: may not step towards ...
   RobotId winner; ///< ... this robot, nearer the ball
 };
 
+/// What one update decided, in the order it happened. Placements are in the order to
+/// apply them (a robot may appear twice: the later wins).
 struct RefereeDecision {
   std::vector<StateChange> state_changes;
   std::vector<GoalScored> goals;
