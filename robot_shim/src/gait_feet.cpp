@@ -20,6 +20,14 @@ WalkRequest walk_request(const api::ActionCommand::Body& body) {
 GaitFeet::GaitFeet(const WalkDef& walk, const KickDef& kick, const DiveDef& dive)
     : walk_(walk), kick_(kick), dive_(dive), feet_(walk_.feet()) {}
 
+void GaitFeet::placed() {
+  walk_.stand_at(odometry());
+  kick_.cancel();
+  dive_.cancel();
+  feet_ = walk_.feet();
+  status_ = {};
+}
+
 void GaitFeet::tick(const api::ActionCommand::Body& request, float dt_s) {
   if (!kick_.running() && !dive_.running()) {
     if (is_kick(request.actionType)) kick_.start(request);

@@ -134,6 +134,14 @@ MotionAdapter::Sample MotionAdapter::sample_at(int64_t utime) const {
           lerp(previous_.odometry, current_.odometry, t)};
 }
 
+void MotionAdapter::placed() {
+  if (engine_->output_kind() != EngineOutputKind::kFeet || stopped_) return;
+  engine_->placed(output_);
+  current_ = previous_ = {output_.feet, output_.odometry};
+  feet_ = current_.feet;
+  status_ = engine_->status();
+}
+
 TickMotion MotionAdapter::tick(api::Blackboard& blackboard) {
   const api::ActionCommand::All& request = blackboard.behaviour.request;
   tick_head(request.head);

@@ -69,6 +69,7 @@ RobotAct Robot::step(const SenseFrame& frame, const RobotSense& sense) {
   act.id = def_.id;
   act.frame = frame.frame;
   act.motion_ticks = frame.motion_ticks;
+  if (sense.placed) motion_.placed();
   for (int i = 0; i < frame.motion_ticks; ++i) act.ticks[static_cast<size_t>(i)] = motion_.tick(blackboard_);
   act.head_yaw_rad = motion_.head_yaw();
   act.head_pitch_rad = motion_.head_pitch();

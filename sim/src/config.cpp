@@ -37,6 +37,10 @@ void bind(IniSchema& s, PhysicsDef& d) {
       .bind("physics.max_foot_spread_mm", &d.max_foot_spread_mm, "a robot's foot centres at most this far apart, mm")
       .bind("physics.max_foot_twist_rad", &d.max_foot_twist_rad,
             "one foot's heading at most this far from the other's, rad (0: no limit)")
+      .bind("physics.stance_return_mm_s", &d.stance_return_mm_s,
+            "a lifted foot's speed back to the walk's stance, mm/s (0: never)")
+      .bind("physics.stance_return_rad_s", &d.stance_return_rad_s,
+            "a lifted foot's turn back to the walk's stance, rad/s (0: never)")
       .bind("physics.wall_restitution", &d.wall_restitution, "ball bounce off the walls, 0..1")
       .bind("physics.post_restitution", &d.post_restitution, "ball bounce off the posts, 0..1")
       .bind("physics.net_restitution", &d.net_restitution, "ball bounce off the nets, 0..1")
@@ -130,6 +134,8 @@ constexpr float kMaxFriction = 10.f;
 /// Box2D steps and solver iterations: 100 of either is 10-50 times the usual cost per tick;
 /// more would make a match crawl without changing it.
 constexpr int kMaxSubsteps = 100, kMaxIterations = 100;
+/// A lifted foot's return to the stance: up to a kick's swing speed and a full turn in 0.1 s.
+constexpr float kMaxStanceReturn_mm_s = 3000.f, kMaxStanceReturn_rad_s = 60.f;
 
 void validate_physics(const PhysicsDef& p) {
   require_range("physics.ball_diameter_mm", p.ball_diameter_mm, kMinBody_mm, kMaxBody_mm);
@@ -143,6 +149,8 @@ void validate_physics(const PhysicsDef& p) {
   require_non_negative("physics.foot_friction", p.foot_friction, kMaxFriction);
   require_range("physics.max_foot_spread_mm", p.max_foot_spread_mm, kMinBody_mm, kMaxBody_mm);
   require_range("physics.max_foot_twist_rad", p.max_foot_twist_rad, 0.f, 3.f);
+  require_range("physics.stance_return_mm_s", p.stance_return_mm_s, 0.f, kMaxStanceReturn_mm_s);
+  require_range("physics.stance_return_rad_s", p.stance_return_rad_s, 0.f, kMaxStanceReturn_rad_s);
   require_fraction("physics.wall_restitution", p.wall_restitution);
   require_fraction("physics.post_restitution", p.post_restitution);
   require_fraction("physics.net_restitution", p.net_restitution);

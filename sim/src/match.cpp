@@ -195,16 +195,19 @@ bool Match::steps_towards_winner(const OnField& robot, const TickMotion& motion)
 
 void Match::advance() {
   std::vector<TickMotion> motions(static_cast<size_t>(world_.robot_count()));
+  std::vector<TickMotion> legs(motions.size());
   for (int tick = 0; tick < ticks_in_frame(frame_); ++tick) {
     for (auto& [id, robot] : on_field_) {
       TickMotion& motion = motions[static_cast<size_t>(robot.world_index)];
-      motion = {};
+      TickMotion& leg_motion = legs[static_cast<size_t>(robot.world_index)];
+      motion = leg_motion = {};
       if (robot.pending.empty()) continue;
+      leg_motion = robot.pending.front(); // the walk moved its legs whether the feet moved or not
       if (may_move(id, robot) && !steps_towards_winner(robot, robot.pending.front()))
         motion = robot.pending.front(); // else the robot's motion is lost
       robot.pending.pop_front();
     }
-    world_.step(motions);
+    world_.step(motions, legs);
     for (int toucher : world_.ball_touches())
       for (const auto& [id, robot] : on_field_)
         if (robot.world_index == toucher) touched_by_team_[static_cast<size_t>(id.team)] = true;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "touchline/angles.hpp"
@@ -24,6 +25,11 @@ b2Vec2 to_m(float x_mm, float y_mm) { return b2Vec2(to_m(x_mm), to_m(y_mm)); }
 constexpr float kWallThicknessM = 0.5f;
 // Thickness of the nets, centred on their nominal lines.
 constexpr float kNetThicknessM = 0.02f;
+/// A foot's turn counts as this much travel at its toe when telling the lifted foot, mm/rad.
+constexpr float kFootTurnRadius_mm = 80.f;
+/// A foot commanded to travel less than this in a tick stands (the solver's and a joint
+/// walk's jitter), mm.
+constexpr float kLiftedTravel_mm = 0.01f;
 
 b2Vec2 rotate(float theta, b2Vec2 v) {
   const float c = std::cos(theta), s = std::sin(theta);
@@ -83,9 +89,13 @@ struct World::Impl {
     RobotId id;
     b2Body* left = nullptr;
     b2Body* right = nullptr;
-    /// The twist (right foot's heading less the left's) the walk's own commands made since
-    /// the robot was placed, rad: what hold_twist leaves alone.
-    float walk_twist_rad = 0;
+    /// Where the walk's own commands alone would have put the feet since the robot was
+    /// placed (square, around the origin): the stance its legs hold the feet in. Their twist
+    /// is what hold_twist leaves alone; a foot the walk moves returns to its place beside the
+    /// other (return_to_stance).
+    Pose2D walk_left, walk_right;
+    /// The twist (right foot's heading less the left's) the walk's own commands made, rad.
+    float walk_twist_rad() const { return normalise_angle(walk_right.theta_rad - walk_left.theta_rad); }
   };
 
   Field field;
@@ -262,10 +272,57 @@ struct World::Impl {
     return FootVelocity{foot, v, m.dtheta_rad / kMotionTick_s};
   }
 
-  void step(const std::vector<TickMotion>& motions) {
-    if (motions.size() != robots.size())
-      throw std::invalid_argument("World::step: " + std::to_string(motions.size()) +
-                                  " motions for " + std::to_string(robots.size()) + " robots");
+  /// `pose` after `m`, a displacement in the body frame of heading `body_theta`.
+  static Pose2D moved(const Pose2D& pose, float body_theta, const FootMotion& m) {
+    const b2Vec2 d = rotate(body_theta, b2Vec2(m.dx_mm, m.dy_mm));
+    return Pose2D{pose.x_mm + d.x, pose.y_mm + d.y, normalise_angle(pose.theta_rad + m.dtheta_rad)};
+  }
+
+  /// A foot's pose after its velocity command for one tick.
+  static Pose2D after_command(const FootVelocity& c) {
+    const Pose2D now = pose_of(*c.foot);
+    return Pose2D{now.x_mm + to_mm(c.linear.x) * kMotionTick_s, now.y_mm + to_mm(c.linear.y) * kMotionTick_s,
+                  normalise_angle(now.theta_rad + c.angular * kMotionTick_s)};
+  }
+
+  /// The legs place a lifted foot: the foot the walk moves this tick (the other stands)
+  /// also moves, at up to stance_return_mm_s and stance_return_rad_s, towards where the
+  /// walk's own steps put it beside the other foot (r.walk_left, r.walk_right). Contacts
+  /// move feet apart from where the walk put them (a foot blocked by another robot's, a
+  /// foot dragged by the legs' rope); without this nothing brings them back, and a robot's
+  /// stance drifts for the rest of the match (a kick's foot 100 mm off where the walk put
+  /// it misses the ball). A standing foot is never moved: only the legs' swing corrects.
+  void return_to_stance(const Robot& r, const TickMotion& m, FootVelocity& left, FootVelocity& right) const {
+    if (physics.stance_return_mm_s <= 0 && physics.stance_return_rad_s <= 0) return;
+    const auto travel = [](const FootMotion& f) { return std::hypot(f.dx_mm, f.dy_mm) + kFootTurnRadius_mm * std::fabs(f.dtheta_rad); };
+    const float left_travel = travel(m.left), right_travel = travel(m.right);
+    if (std::max(left_travel, right_travel) < kLiftedTravel_mm) return; // standing, or both feet still
+    const bool left_lifted = left_travel > right_travel;
+    FootVelocity& lifted = left_lifted ? left : right;
+    const FootVelocity& standing = left_lifted ? right : left;
+    // Where the walk put the lifted foot, in the frame of the standing one, placed on the standing foot.
+    const Pose2D& walk_lifted = left_lifted ? r.walk_left : r.walk_right;
+    const Pose2D& walk_standing = left_lifted ? r.walk_right : r.walk_left;
+    const b2Vec2 offset = rotate(-walk_standing.theta_rad, b2Vec2(walk_lifted.x_mm - walk_standing.x_mm,
+                                                                   walk_lifted.y_mm - walk_standing.y_mm));
+    const Pose2D base = after_command(standing);
+    const b2Vec2 placed = rotate(base.theta_rad, offset);
+    const Pose2D at = after_command(lifted);
+    b2Vec2 error(base.x_mm + placed.x - at.x_mm, base.y_mm + placed.y - at.y_mm);
+    const float max_mm = physics.stance_return_mm_s * kMotionTick_s;
+    if (error.Length() > max_mm) error *= max_mm / error.Length();
+    const float max_rad = physics.stance_return_rad_s * kMotionTick_s;
+    const float turn = std::clamp(normalise_angle(base.theta_rad + walk_lifted.theta_rad - walk_standing.theta_rad - at.theta_rad),
+                                  -max_rad, max_rad);
+    lifted.linear += to_m(error.x / kMotionTick_s, error.y / kMotionTick_s);
+    lifted.angular += turn / kMotionTick_s;
+  }
+
+  void step(const std::vector<TickMotion>& motions, const std::vector<TickMotion>& legs) {
+    if (motions.size() != robots.size() || legs.size() != robots.size())
+      throw std::invalid_argument("World::step: " + std::to_string(motions.size()) + " motions and " +
+                                  std::to_string(legs.size()) + " leg motions for " +
+                                  std::to_string(robots.size()) + " robots");
     contact_rules.touches.clear();
     std::vector<FootVelocity> commands;
     commands.reserve(2 * robots.size());
@@ -274,7 +331,10 @@ struct World::Impl {
       const float theta = mean_heading(r.left->GetAngle(), r.right->GetAngle());
       commands.push_back(foot_velocity(r.left, theta, motions[i].left));
       commands.push_back(foot_velocity(r.right, theta, motions[i].right));
-      r.walk_twist_rad = normalise_angle(r.walk_twist_rad + motions[i].right.dtheta_rad - motions[i].left.dtheta_rad);
+      const float walk_theta = mean_heading(r.walk_left.theta_rad, r.walk_right.theta_rad);
+      r.walk_left = moved(r.walk_left, walk_theta, legs[i].left);
+      r.walk_right = moved(r.walk_right, walk_theta, legs[i].right);
+      return_to_stance(r, motions[i], commands[commands.size() - 2], commands.back());
     }
     const int substeps = std::max(1, physics.substeps);
     const float h = kMotionTick_s / static_cast<float>(substeps);
@@ -296,7 +356,7 @@ struct World::Impl {
 
   /// Turns both feet of `r` towards each other, equally (their mean heading stays where it
   /// was), until one is at most max_foot_twist_rad from the other, or as far as the walk
-  /// itself turned them apart (r.walk_twist_rad): only a contact's twist is held, never the
+  /// itself turned them apart (r.walk_twist_rad()): only a contact's twist is held, never the
   /// walk's own (a turning walk's feet open ~0.83 rad). The bound is the walk's twist, not
   /// the twist before the tick plus the walk's turn in it: that ratchets, a contact's excess
   /// kept whenever the walk turned the same way, up to the feet pi apart.
@@ -307,7 +367,7 @@ struct World::Impl {
     constexpr float kSolverSlack_rad = 1e-4f; // the solver's rounding on an untouched foot: no correction
     constexpr float kLegTwistLimit_rad = 1.15f;
     const float twist = twist_of(r);
-    const float bound = std::max(physics.max_foot_twist_rad, std::min(std::fabs(r.walk_twist_rad), kLegTwistLimit_rad));
+    const float bound = std::max(physics.max_foot_twist_rad, std::min(std::fabs(r.walk_twist_rad()), kLegTwistLimit_rad));
     if (std::fabs(twist) <= bound + kSolverSlack_rad) return;
     const float excess = 0.5f * (twist - std::copysign(bound, twist));
     r.left->SetTransform(r.left->GetPosition(), r.left->GetAngle() + excess);
@@ -338,6 +398,7 @@ int World::add_robot(RobotId id, const Pose2D& body) {
   robot.id = id;
   robot.left = impl_->add_foot(index, left);
   robot.right = impl_->add_foot(index, right);
+  std::tie(robot.walk_left, robot.walk_right) = impl_->feet_at(Pose2D{}); // standing square
   impl_->add_legs(robot.left, robot.right);
   impl_->robots.push_back(robot);
   return index;
@@ -348,7 +409,7 @@ void World::place_robot(int index, const Pose2D& body) {
   const auto [left, right] = impl_->feet_at(body);
   Impl::place(robot.left, left);
   Impl::place(robot.right, right);
-  robot.walk_twist_rad = 0; // placed with its feet parallel
+  std::tie(robot.walk_left, robot.walk_right) = impl_->feet_at(Pose2D{}); // placed square
 }
 
 void World::place_ball(float x_mm, float y_mm, float vx_mm_s, float vy_mm_s) {
@@ -356,7 +417,11 @@ void World::place_ball(float x_mm, float y_mm, float vx_mm_s, float vy_mm_s) {
   impl_->ball->SetLinearVelocity(to_m(vx_mm_s, vy_mm_s));
 }
 
-void World::step(const std::vector<TickMotion>& motions) { impl_->step(motions); }
+void World::step(const std::vector<TickMotion>& motions) { impl_->step(motions, motions); }
+
+void World::step(const std::vector<TickMotion>& motions, const std::vector<TickMotion>& legs) {
+  impl_->step(motions, legs);
+}
 
 int World::robot_count() const { return static_cast<int>(impl_->robots.size()); }
 
@@ -396,7 +461,9 @@ uint64_t World::state_hash() const {
     for (float value : {p.x, p.y, body->GetAngle(), v.x, v.y, body->GetAngularVelocity()})
       hash.add_value(value);
   }
-  for (const Impl::Robot& r : impl_->robots) hash.add_value(r.walk_twist_rad);
+  for (const Impl::Robot& r : impl_->robots)
+    for (const Pose2D& p : {r.walk_left, r.walk_right})
+      for (float value : {p.x_mm, p.y_mm, p.theta_rad}) hash.add_value(value);
   hash.add_value(impl_->ticks);
   return hash.value();
 }

@@ -40,6 +40,29 @@ TEST(MotionAdapter, WalkRequestMovesTheFeetAndTheOdometry) {
   EXPECT_GT(forward_sum, 250.f);
 }
 
+// Placed mid-step (RobotSense::placed), our walk stands square where it is: the next tick
+// moves no foot, and its odometry goes on from where it was (no jump for localisation).
+TEST(MotionAdapter, PlacedStandsTheWalkSquareWithoutAJump) {
+  robot::MotionAdapter motion(walk_def());
+  Blackboard blackboard;
+  blackboard.behaviour.request.body = ActionCommand::walk(200, 0, 0.5f);
+  for (int i = 0; i < 37; ++i) motion.tick(blackboard);
+  ASSERT_FALSE(motion.walk().standing());
+  const Pose2D body = motion.walk().odometry();
+  motion.placed();
+  EXPECT_TRUE(motion.walk().standing());
+  EXPECT_NEAR(motion.walk().odometry().x_mm, body.x_mm, 1e-3f);
+  EXPECT_NEAR(motion.walk().odometry().theta_rad, body.theta_rad, 1e-5f);
+  blackboard.behaviour.request.body = ActionCommand::stand();
+  const auto tick = motion.tick(blackboard);
+  for (const FootMotion& m : {tick.left, tick.right}) {
+    EXPECT_EQ(m.dx_mm, 0.f);
+    EXPECT_EQ(m.dy_mm, 0.f);
+    EXPECT_EQ(m.dtheta_rad, 0.f);
+  }
+  EXPECT_NEAR(blackboard.motion.odometry.x, body.x_mm, 1e-3f);
+}
+
 TEST(MotionAdapter, SpeedScalesTheWalkRequest) {
   robot::MotionAdapter slow(walk_def()), fast(walk_def());
   Blackboard a, b;

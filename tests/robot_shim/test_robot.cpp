@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 using namespace touchline;
 using namespace touchline::api;
 
@@ -17,10 +19,11 @@ class Probe : public Behaviour {
     seen_player = blackboard.gameController.playerNumber;
     ++ticks;
     ActionCommand::All all;
-    all.body = ActionCommand::walk(100, 0, 0);
+    all.body = body;
     all.leds.chest = 0xff0000;
     return all;
   }
+  ActionCommand::Body body = ActionCommand::walk(100, 0, 0); ///< what it asks for
   int64_t seen_utime = -1;
   AbsCoord seen_pos;
   RRCoord seen_ball;
@@ -88,6 +91,40 @@ TEST(Robot, WalkingRobotReportsFootMotionAndOdometry) {
   EXPECT_GT(robot.blackboard().motion.odometry.x, 200.f);
   EXPECT_NEAR(moved, robot.blackboard().motion.odometry.x, 0.05f * robot.blackboard().motion.odometry.x);
   EXPECT_GE(robot.behaviour_cpu_us(), 0);
+}
+
+/// How far robot's feet move in the frame `sense` makes (both feet, every tick), mm.
+float feet_travel(robot::Robot& robot, const RobotSense& sense, int64_t frame_index) {
+  const SenseFrame frame = frame_with(sense, frame_index);
+  const RobotAct act = robot.step(frame, frame.robots[0]);
+  float travel = 0;
+  for (int i = 0; i < act.motion_ticks; ++i)
+    for (const FootMotion& m : {act.ticks[i].left, act.ticks[i].right}) travel += std::hypot(m.dx_mm, m.dy_mm);
+  return travel;
+}
+
+// The referee put the robot down (feet square, RobotSense::placed) mid-step: it stands square
+// at once, so its next steps start from the feet the world placed. Unplaced, the walk asked
+// to stand first finishes the step it is in.
+TEST(Robot, ARobotPutDownStandsSquareInItsWalk) {
+  for (const bool placed : {true, false}) {
+    auto probe_owner = std::make_unique<Probe>();
+    Probe& probe = *probe_owner;
+    robot::Robot robot(robot_def({0, 2}), std::move(probe_owner));
+    RobotSense sense;
+    sense.id = {0, 2};
+    for (int64_t f = 0; f < 20; ++f) feet_travel(robot, sense, f);
+    ASSERT_FALSE(robot.motion().walk().standing()) << "walking";
+    probe.body = ActionCommand::stand();
+    sense.placed = placed;
+    const float travel = feet_travel(robot, sense, 20);
+    if (placed) {
+      EXPECT_EQ(travel, 0.f) << "standing square: no foot moves";
+      EXPECT_TRUE(robot.motion().walk().standing());
+    } else {
+      EXPECT_GT(travel, 1.f) << "the walk finishes its step";
+    }
+  }
 }
 
 TEST(Robot, TeamOneSeesTheFieldFromItsOwnSide) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "touchline/angles.hpp"
 
@@ -236,6 +237,38 @@ TEST(Match, RefereeHoldsRobotsStillInInitialAndSetAndTellsTheGame) {
   EXPECT_EQ(events.front().kind, sim::MatchEvent::Kind::kStateChange);
   EXPECT_EQ(events.front().text, "READY");
   EXPECT_EQ(events.front().utime, 1000000); // exactly when INITIAL ran out
+}
+
+/// An act of robot `id` that moves only its left foot forward by dx_mm each tick.
+RobotAct left_foot_act(RobotId id, int64_t frame, float dx_mm) {
+  RobotAct act = forward_act(id, frame, ticks_in_frame(frame), 0.f);
+  for (int i = 0; i < act.motion_ticks; ++i) act.ticks[i].left.dx_mm = dx_mm;
+  return act;
+}
+
+// A step the referee stops (INITIAL holds the robot still) moves no foot, but the walk moved
+// its legs: when the walk next lifts that foot (READY), the legs put it where the walk's steps
+// did, well ahead of the other foot, not just the little the walk now moves it.
+TEST(Match, AStepTheRefereeStoppedStillSetsTheStanceTheLegsHold) {
+  sim::Match match(refereed_config());
+  match.join({0, 1}, 9, 0);
+  match.start();
+  const auto ahead_mm = [&] { // the left foot's lead over the right along the body's heading
+    const sim::RobotTruth r = match.truth().robots[0].truth;
+    return (r.left_foot.x_mm - r.right_foot.x_mm) * std::cos(r.body.theta_rad) +
+           (r.left_foot.y_mm - r.right_foot.y_mm) * std::sin(r.body.theta_rad);
+  };
+  for (int f = 0; f < 15; ++f) { // INITIAL: 15 frames of 2 mm a tick, 100 mm in all
+    match.apply(left_foot_act({0, 1}, match.frame(), 2.f), 9);
+    match.advance();
+  }
+  EXPECT_NEAR(ahead_mm(), 0.f, 1e-3f) << "held still";
+  while (match.game().state != GameState::kReady) match.advance();
+  for (int f = 0; f < 30; ++f) { // READY: 30 frames of 0.05 mm a tick, 5 mm
+    match.apply(left_foot_act({0, 1}, match.frame(), 0.05f), 9);
+    match.advance();
+  }
+  EXPECT_NEAR(ahead_mm(), 105.f, 0.5f);
 }
 
 TEST(Match, ABallOutWithSetPlaysIsAKickInTheRobotsSenseAndItsTeamsTouchEndsIt) {

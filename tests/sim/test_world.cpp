@@ -523,6 +523,9 @@ TEST(World, TheLegsHoldTheFeetsHeadingsTogetherAgainstAContact) {
   EXPECT_LT(held.jump, 0.2f) << "the body heading jumped";
   PhysicsDef free = physics;
   free.max_foot_twist_rad = 0;
+  // Robot 1's legs also put its lifted feet back in its stance, which changes its shove; the
+  // shove that flips robot 0 is the one with robot 1's feet left where the contact turns them.
+  free.stance_return_mm_s = free.stance_return_rad_s = 0;
   EXPECT_GT(shoved(free).jump, 3.f) << "without the limit, the body flips about (the case the limit is for)";
 }
 
@@ -587,6 +590,90 @@ TEST(World, TheWalksOwnTwistStopsAtTheLegsLimit) {
     worst = std::max(worst, feet_twist(r));
   }
   EXPECT_NEAR(worst, 1.15f, 1e-3f);
+}
+
+// --- the legs hold the walk's stance -------------------------------------------------------
+
+/// Adds robot 0 at the origin, whose walk steps its left foot 100 mm forward while the world
+/// moves neither foot (a step the referee stopped: step's `legs`), so its feet are square
+/// but its walk's stance has the left foot ahead.
+void stop_a_step(World& world) {
+  world.add_robot(kRed1, Pose2D{0, 0, 0});
+  park_ball(world);
+  TickMotion step;
+  step.left.dx_mm = 2;
+  for (int t = 0; t < 50; ++t) world.step({TickMotion{}}, {step});
+}
+
+/// Robot 0 lifts its left foot for 60 ticks, the walk moving it 0.05 mm a tick (3 mm in all).
+void lift_left_foot(World& world) {
+  TickMotion lift;
+  lift.left.dx_mm = 0.05f;
+  for (int t = 0; t < 60; ++t) world.step({lift});
+}
+
+// A step the referee stopped leaves the feet where they were; the next time the walk lifts
+// that foot, the legs put it where the walk's own steps put it: 100 mm ahead of the other
+// (and the 3 mm the walk now moves it), at up to stance_return_mm_s. The standing foot never
+// moves. Without the return the foot moves only its 3 mm, and the robot's stance stays
+// 100 mm off its walk's for the rest of the match.
+TEST(World, TheLegsPutALiftedFootBackInTheWalksStance) {
+  PhysicsDef physics;
+  ASSERT_GT(physics.stance_return_mm_s, 0.f) << "on by default";
+  World world(FieldDef{}, physics);
+  stop_a_step(world);
+  const RobotTruth before = world.robot(0);
+  EXPECT_NEAR(before.left_foot.x_mm, 0, 1e-3f) << "a stopped step moves no foot";
+  lift_left_foot(world);
+  const RobotTruth after = world.robot(0);
+  EXPECT_NEAR(after.left_foot.x_mm, 103, 0.05f);
+  EXPECT_NEAR(after.left_foot.y_mm, before.left_foot.y_mm, 0.05f);
+  EXPECT_NEAR(after.right_foot.x_mm, before.right_foot.x_mm, 1e-3f) << "the standing foot stays";
+  EXPECT_NEAR(after.right_foot.y_mm, before.right_foot.y_mm, 1e-3f);
+  EXPECT_NEAR(feet_twist(after), 0, 1e-5f);
+
+  PhysicsDef off = physics;
+  off.stance_return_mm_s = off.stance_return_rad_s = 0;
+  World loose(FieldDef{}, off);
+  stop_a_step(loose);
+  lift_left_foot(loose);
+  EXPECT_NEAR(loose.robot(0).left_foot.x_mm, 3, 0.05f) << "without the return, only the walk's 3 mm";
+}
+
+// A robot put down stands square: the stance its walk had before is forgotten (its walk
+// stands square too, RobotSense::placed), so a lifted foot moves only as the walk moves it.
+TEST(World, APlacedRobotsStanceIsSquare) {
+  World world(FieldDef{}, PhysicsDef{});
+  stop_a_step(world);
+  world.place_robot(0, Pose2D{500, 0, 0});
+  lift_left_foot(world);
+  EXPECT_NEAR(world.robot(0).left_foot.x_mm, 503, 0.05f);
+}
+
+// The return turns a lifted foot back too: the walk turned its right foot 0.5 rad in a step
+// the referee stopped; lifted, it turns to 0.5 rad from the left foot at up to
+// stance_return_rad_s (2 rad/s: 0.25 s), and no further.
+TEST(World, TheLegsTurnALiftedFootBackToTheWalksTwist) {
+  World world(FieldDef{}, PhysicsDef{});
+  world.add_robot(kRed1, Pose2D{0, 0, 0});
+  park_ball(world);
+  TickMotion turn;
+  turn.right.dtheta_rad = 0.01f;
+  for (int t = 0; t < 50; ++t) world.step({TickMotion{}}, {turn});
+  TickMotion lift;
+  lift.right.dx_mm = 0.05f;
+  for (int t = 0; t < 20; ++t) world.step({lift});
+  const float halfway = feet_twist(world.robot(0));
+  EXPECT_GT(halfway, 0.3f);
+  EXPECT_LT(halfway, 0.45f) << "at most 0.02 rad a tick";
+  for (int t = 0; t < 40; ++t) world.step({lift});
+  EXPECT_NEAR(feet_twist(world.robot(0)), 0.5f, 1e-4f);
+}
+
+TEST(World, RejectsLegMotionsThatDoNotMatchTheRobots) {
+  World world(FieldDef{}, PhysicsDef{});
+  world.add_robot(kRed1, Pose2D{});
+  EXPECT_THROW(world.step({TickMotion{}}, {}), std::invalid_argument);
 }
 
 // --- determinism ------------------------------------------------------------------------

@@ -34,6 +34,8 @@ class DiveGenerator {
   /// or any other action type, is ignored.
   void start(const api::ActionCommand::Body& body);
   bool running() const { return running_; }
+  /// Stops the dive at once (the robot was picked up): not running from now on.
+  void cancel() { running_ = false; }
 
   /// One 10 ms tick of the running dive; `walk` is the walk it interrupts, left as it was
   /// until the landing, then standing square around the landed body pose. Returns both

@@ -20,6 +20,10 @@ class GaitFeet {
   /// One tick of dt_s seconds (the kick counts 10 ms ticks whatever dt_s is).
   void tick(const api::ActionCommand::Body& request, float dt_s);
 
+  /// The referee put the robot down: standing, feet square around the body, no kick or
+  /// dive running (the world placed its feet so).
+  void placed();
+
   /// Both feet after the last tick (the walk's, or the kick's mid-swing).
   const FeetPose& feet() const { return feet_; }
   Pose2D odometry() const { return dive_.running() ? dive_.odometry() : walk_.odometry(); }

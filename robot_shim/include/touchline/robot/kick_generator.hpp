@@ -94,6 +94,8 @@ class KickGenerator {
   /// prepare. A running kick ignores this: it always runs to completion.
   void start(const api::ActionCommand::Body& body);
   bool running() const { return phase_ != KickPhase::kNone; }
+  /// Stops the kick at once (the robot was picked up): not running from now on.
+  void cancel() { phase_ = KickPhase::kNone; }
 
   /// One 10 ms tick of the running kick; `walk` is the walk it interrupts (ticked with
   /// no request until it stands, then left standing). Returns both feet after the tick,

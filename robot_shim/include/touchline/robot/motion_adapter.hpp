@@ -45,6 +45,10 @@ class MotionAdapter {
   /// Any engine. std::invalid_argument for none or a period that is not positive.
   MotionAdapter(std::unique_ptr<WalkEngine> engine, const MotionDef& def);
 
+  /// The referee put the robot down (RobotSense::placed), feet square: a feet engine stands
+  /// square where it is, so its next steps start from the feet the world placed.
+  void placed();
+
   /// One 10 ms world motion tick: how the feet move, for the world (frame.hpp).
   TickMotion tick(api::Blackboard& blackboard);
 

@@ -15,6 +15,7 @@ class WalkCycleEngine : public WalkEngine {
   void start(WalkEngineOutput& out) override;
   void tick(const api::ActionCommand::Body& request, const nao::Sensors& sensors, WalkEngineOutput& out) override;
   WalkEngineStatus status() const override { return gait_.status(); }
+  void placed(WalkEngineOutput& out) override;
   const GaitFeet* gait() const override { return &gait_; }
 
  private:

@@ -51,6 +51,10 @@ class WalkEngine {
   /// robot senses now.
   virtual void tick(const api::ActionCommand::Body& request, const nao::Sensors& sensors, WalkEngineOutput& out) = 0;
   virtual WalkEngineStatus status() const = 0;
+  /// The referee picked the robot up and put it down standing, feet square (the world placed
+  /// them so): an engine that plans feet stands there and writes them to `out`. A joint engine
+  /// keeps its state (the default): its feet come from its joints, not from a plan.
+  virtual void placed(WalkEngineOutput& out) { (void)out; }
   /// The engine's own odometry as it keeps it (a team's walk dead-reckons its steps: its
   /// per-tick forward, left (mm) and turn (rad) summed), to compare with what the feet did;
   /// nothing for an engine that keeps none.

@@ -38,6 +38,11 @@ struct PhysicsDef {
   /// frame, unseen by odometry. The walk's own commanded twist (a fast turn opens the feet
   /// ~0.83 rad) is never held. 0: no limit.
   float max_foot_twist_rad = 0.8f;
+  /// The legs place a lifted foot where the walk's own steps put it beside the standing foot:
+  /// a foot the walk moves also moves towards that place at up to these speeds, so a foot a
+  /// contact shoved aside is back in the walk's stance within a step or two (0 and 0: never).
+  float stance_return_mm_s = 300.f;      ///< mm/s
+  float stance_return_rad_s = 2.f;       ///< rad/s
   float wall_restitution = 0.3f;         ///< ball off the boundary walls, 0..1
   float post_restitution = 0.5f;         ///< ball off the goal posts, 0..1
   float net_restitution = 0.f;           ///< ball off the nets, 0..1: nets absorb the ball, so a goal stays in
@@ -83,6 +88,11 @@ class World {
   /// body frame of the current feet, unless something is in its way. A foot with no
   /// command (zero motion) stays put.
   void step(const std::vector<TickMotion>& motions);
+  /// The same, where legs[i] is what robot i's walk did with its legs this tick, moved or
+  /// not: a motion the referee stopped (a fallen robot, a contest's loser stepping towards
+  /// the winner) still moved the legs against each other, which sets the stance the legs
+  /// return a lifted foot to (PhysicsDef::stance_return_mm_s).
+  void step(const std::vector<TickMotion>& motions, const std::vector<TickMotion>& legs);
 
   int robot_count() const;
   /// Index of the robot whose foot touched the ball last, -1 if none has.
