@@ -294,13 +294,15 @@ struct World::Impl {
   /// it misses the ball). A standing foot is never moved: only the legs' swing corrects.
   void return_to_stance(const Robot& r, const TickMotion& m, FootVelocity& left, FootVelocity& right) const {
     if (physics.stance_return_mm_s <= 0 && physics.stance_return_rad_s <= 0) return;
-    const auto travel = [](const FootMotion& f) { return std::hypot(f.dx_mm, f.dy_mm) + kFootTurnRadius_mm * std::fabs(f.dtheta_rad); };
+    const auto travel = [](const FootMotion& f) {
+      return std::hypot(f.dx_mm, f.dy_mm) + kFootTurnRadius_mm * std::fabs(f.dtheta_rad);
+    };
     const float left_travel = travel(m.left), right_travel = travel(m.right);
     if (std::max(left_travel, right_travel) < kLiftedTravel_mm) return; // standing, or both feet still
     const bool left_lifted = left_travel > right_travel;
     FootVelocity& lifted = left_lifted ? left : right;
     const FootVelocity& standing = left_lifted ? right : left;
-    // Where the walk put the lifted foot, in the frame of the standing one, placed on the standing foot.
+    // Where the walk put the lifted foot in the standing one's frame, set on the standing foot.
     const Pose2D& walk_lifted = left_lifted ? r.walk_left : r.walk_right;
     const Pose2D& walk_standing = left_lifted ? r.walk_right : r.walk_left;
     const b2Vec2 offset = rotate(-walk_standing.theta_rad, b2Vec2(walk_lifted.x_mm - walk_standing.x_mm,
@@ -312,8 +314,8 @@ struct World::Impl {
     const float max_mm = physics.stance_return_mm_s * kMotionTick_s;
     if (error.Length() > max_mm) error *= max_mm / error.Length();
     const float max_rad = physics.stance_return_rad_s * kMotionTick_s;
-    const float turn = std::clamp(normalise_angle(base.theta_rad + walk_lifted.theta_rad - walk_standing.theta_rad - at.theta_rad),
-                                  -max_rad, max_rad);
+    const float turn_error = base.theta_rad + walk_lifted.theta_rad - walk_standing.theta_rad - at.theta_rad;
+    const float turn = std::clamp(normalise_angle(turn_error), -max_rad, max_rad);
     lifted.linear += to_m(error.x / kMotionTick_s, error.y / kMotionTick_s);
     lifted.angular += turn / kMotionTick_s;
   }

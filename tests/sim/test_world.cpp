@@ -594,14 +594,12 @@ TEST(World, TheWalksOwnTwistStopsAtTheLegsLimit) {
 
 // --- the legs hold the walk's stance -------------------------------------------------------
 
-/// Adds robot 0 at the origin, whose walk steps its left foot 100 mm forward while the world
-/// moves neither foot (a step the referee stopped: step's `legs`), so its feet are square
-/// but its walk's stance has the left foot ahead.
-void stop_a_step(World& world) {
+/// Adds robot 0 at the origin, whose walk moves its legs by `step` for 50 ticks while the
+/// world moves neither foot (a step the referee stopped: step's `legs`), so its feet are
+/// square but its walk's stance is not. By default the left foot steps 100 mm forward.
+void stop_a_step(World& world, const TickMotion& step = {FootMotion{2, 0, 0}, FootMotion{}}) {
   world.add_robot(kRed1, Pose2D{0, 0, 0});
   park_ball(world);
-  TickMotion step;
-  step.left.dx_mm = 2;
   for (int t = 0; t < 50; ++t) world.step({TickMotion{}}, {step});
 }
 
@@ -655,11 +653,9 @@ TEST(World, APlacedRobotsStanceIsSquare) {
 // stance_return_rad_s (2 rad/s: 0.25 s), and no further.
 TEST(World, TheLegsTurnALiftedFootBackToTheWalksTwist) {
   World world(FieldDef{}, PhysicsDef{});
-  world.add_robot(kRed1, Pose2D{0, 0, 0});
-  park_ball(world);
   TickMotion turn;
   turn.right.dtheta_rad = 0.01f;
-  for (int t = 0; t < 50; ++t) world.step({TickMotion{}}, {turn});
+  stop_a_step(world, turn);
   TickMotion lift;
   lift.right.dx_mm = 0.05f;
   for (int t = 0; t < 20; ++t) world.step({lift});
