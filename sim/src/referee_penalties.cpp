@@ -84,11 +84,11 @@ int Referee::judge_walking_into(int64_t now, const RobotOnField& a, const RobotO
 
 // Thesis 2.2.4 for every pair of robots on the field. Contesting the ball is no foul: of
 // two opponents, the robot farther from it is reported stopped (by the nearer). Pushing an
-// opponent is penalised, the pusher taken off (rules.pushing_model: the robot the thesis names, or the one walking into the
-// other); the pair then gives no other pushing penalty for pushing_cooldown_s, so one
-// collision gives one penalty even if the match moves robots a frame late or contact
-// distance flickers as feet step. Teammates pushing each other is no foul (SPL penalises
-// pushing an opponent).
+// opponent is penalised, the pusher taken off (rules.pushing_model: the robot the thesis
+// names, or the one walking into the other); the pair then gives no other pushing penalty
+// for pushing_cooldown_s, so one collision gives one penalty even if the match moves robots
+// a frame late or contact distance flickers as feet step. Teammates pushing each other is no
+// foul (SPL penalises pushing an opponent).
 void Referee::check_collisions(int64_t now, const BallTruth& ball, const Robots& robots, RefereeDecision& d) {
   // Contacts between opponents, timed from their first frame (pushing_min_contact_s).
   std::map<std::pair<RobotId, RobotId>, int64_t> contacts;

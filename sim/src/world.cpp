@@ -369,7 +369,8 @@ struct World::Impl {
     constexpr float kSolverSlack_rad = 1e-4f; // the solver's rounding on an untouched foot: no correction
     constexpr float kLegTwistLimit_rad = 1.15f;
     const float twist = twist_of(r);
-    const float bound = std::max(physics.max_foot_twist_rad, std::min(std::fabs(r.walk_twist_rad()), kLegTwistLimit_rad));
+    const float walk_twist = std::min(std::fabs(r.walk_twist_rad()), kLegTwistLimit_rad);
+    const float bound = std::max(physics.max_foot_twist_rad, walk_twist);
     if (std::fabs(twist) <= bound + kSolverSlack_rad) return;
     const float excess = 0.5f * (twist - std::copysign(bound, twist));
     r.left->SetTransform(r.left->GetPosition(), r.left->GetAngle() + excess);
