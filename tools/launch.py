@@ -388,7 +388,7 @@ class Launcher:
             return EXIT_FAILED
         summary = json.loads(summary_path.read_text())  # the world's own word, score included: the bus may lie
         summary["events"] = [{"sim_s": t, "what": line} for t, line in sorted(watch.events + keeper.lines())]
-        add_match_events(summary, watch.match_events)
+        add_match_events(summary)
         summary["mode"] = a.mode
         summary["shim_deaths"] = keeper.summary()
         summary["launcher_malformed"] = dict(watch.malformed)
@@ -440,15 +440,8 @@ class Launcher:
             logger.error(f"launch: touchline_match {child.why()} (logs in {self.logdir})")
             return 2 if child.poll() == 2 else EXIT_FAILED
         summary = json.loads(summary_path.read_text())
-        from touchline import match_event_t
-        events = []
-        for fields in summary.pop("match_events"):
-            event = match_event_t()
-            for key, value in fields.items():
-                setattr(event, key, value)
-            events.append(event)
         summary["events"] = []  # robot trouble the world reports over the bus: none without one
-        add_match_events(summary, events)
+        add_match_events(summary)
         summary["mode"] = "in-process"
         summary["shim_deaths"] = []
         summary["launcher_malformed"] = {}
@@ -525,9 +518,16 @@ def mode(args: argparse.Namespace) -> str:
     return "in-process" if args.in_process else args.mode
 
 
-def add_match_events(summary: dict, match_events: list) -> None:
-    """The summary's goals, penalties, falls, set plays and stuck games from the world's match_event_t
-    messages (TL_EVENT, or touchline_match's summary)."""
+def add_match_events(summary: dict) -> None:
+    """The summary's goals, penalties, falls, set plays and stuck games from its "match_events": the
+    world's own record of what it published on TL_EVENT, which the bus may have dropped part of."""
+    from touchline import match_event_t
+    match_events = []
+    for fields in summary.pop("match_events"):
+        event = match_event_t()
+        for key, value in fields.items():
+            setattr(event, key, value)
+        match_events.append(event)
     summary["goals"] = [{"sim_s": e.utime / 1e6, "team": e.team} for e in match_events if e.kind == e.GOAL]
     summary["penalties"] = [{"sim_s": e.utime / 1e6, "team": e.team, "player": e.player, "kind": e.text}
                             for e in match_events if e.kind == e.PENALTY]

@@ -52,7 +52,7 @@ class MatchWatch:
         self.kicked_off = False  # the world published the game: every robot joined
         self.status: dict = {}   # (team, player) -> last robot_status_t
         self.events: list = []   # (sim_s, line) for robot trouble worth a summary line
-        self.match_events: list = []  # decoded match_event_t: goals, penalties, falls, states
+        self._goals_counted = 0  # goals the progress total has grown by
         self.malformed = {channel: 0 for channel in CHANNELS}  # messages skipped, per channel
         self.last_malformed = ""  # why the latest one was skipped
         self.error: str | None = None  # why the watching thread stopped, if it failed
@@ -140,8 +140,14 @@ class MatchWatch:
         self._advance(msg.utime)
         self.kicked_off = True
         self.score = tuple(msg.score)
+        # Goals from the score, which every TL_GAME repeats, not from TL_EVENT's GOAL, which
+        # the bus may drop: each adds READY and SET to the total.
+        goals = sum(self.score)
         if self.progress is not None:
+            for _ in range(goals - self._goals_counted):
+                self.progress.goal()
             self.progress.update(self.sim_s, self.state, self.score)
+        self._goals_counted = max(self._goals_counted, goals)
 
     def _on_status(self, channel: str, data: bytes) -> None:
         msg = self._decode(channel, data, self._status_t, self._check_status)
@@ -159,11 +165,10 @@ class MatchWatch:
         if msg is None:
             return
         self._advance(msg.utime)
-        self.match_events.append(msg)
         if msg.kind == msg.STATE_CHANGE:
             self.state = msg.text
-        if msg.kind in (msg.GOAL, msg.GAME_STUCK) and self.progress is not None:
-            self.progress.goal()  # both restart with READY and SET
+        if msg.kind == msg.GAME_STUCK and self.progress is not None:
+            self.progress.goal()  # READY and SET again, as after a goal
 
     def timed_out(self, team: int, player: int) -> bool:
         """Whether the world last said this robot is inactive (timed out), so that a

@@ -35,6 +35,16 @@ json robot_rows(const sim::Match& match, const sim::TruthFrame& truth) {
   return rows;
 }
 
+json event_rows(const std::vector<sim::MatchEvent>& events) {
+  json rows = json::array();
+  for (const sim::MatchEvent& event : events) {
+    const match_event_t e = transport::to_msg(event);
+    rows.push_back({{"utime", e.utime}, {"kind", int{e.kind}}, {"team", int{e.team}}, {"player", int{e.player}},
+                    {"text", e.text}});
+  }
+  return rows;
+}
+
 /// A ratio that is 0, not a division by zero, before anything was timed.
 double per(double numerator, double denominator) { return denominator > 0 ? numerator / denominator : 0; }
 
@@ -69,19 +79,13 @@ void write_summary_json(const std::string& path, const sim::Match& match, const 
       {"score", {match.game().score[0], match.game().score[1]}},
       {"ball", {{"x_mm", truth.ball.x_mm}, {"y_mm", truth.ball.y_mm}}},
       {"robots", robot_rows(match, truth)},
+      {"match_events", event_rows(s.events)},
   };
   if (extras) {
     summary["world_wall_s"] = extras->world_wall_s;
     summary["physics_rtf"] = per(s.sim_s, extras->world_wall_s);
     summary["cpu_s"] = extras->cpu_s;
     summary["cpu_rtf"] = per(s.sim_s, extras->cpu_s);
-    json events = json::array();
-    for (const sim::MatchEvent& event : extras->events) {
-      const match_event_t e = transport::to_msg(event);
-      events.push_back({{"utime", e.utime}, {"kind", int{e.kind}}, {"team", int{e.team}}, {"player", int{e.player}},
-                        {"text", e.text}});
-    }
-    summary["match_events"] = std::move(events);
   }
   // Invalid UTF-8 in an event's text is replaced rather than thrown on: the summary is
   // written at the end of a whole match.

@@ -107,8 +107,8 @@ int main(int argc, char** argv) {
     ("seed", number_option("--seed", &seed, uint64_t{0}, std::numeric_limits<uint64_t>::max()),
      "random seed, 0..2^64-1: the camera noise, false negatives and falls all draw from it")
     ("summary", po::value(&summary_path),
-     "write a JSON summary of the match to this path at its end, as sim_world --summary does, with the "
-     "match's events (goals, penalties, falls, set plays) as \"match_events\", the world's own wall time "
+     "write a JSON summary of the match to this path at its end, as sim_world --summary does (the "
+     "match's events, goals, penalties, falls and set plays, as \"match_events\"), with the world's own wall time "
      "(world_wall_s, physics_rtf) and the match's CPU time (cpu_s, cpu_rtf) (checked writable at start)")
     ("log", po::value(&log_path),
      "record the match to this LCM event log as sim_world --log does: TL_MATCH, TL_GAME, TL_TRUTH every "
@@ -253,13 +253,15 @@ int main(int argc, char** argv) {
     summary.wall_s = wall_s();
     summary.truth_hash = truth_hash.value();
     summary.interrupted = g_stop_signal != 0;
+    summary.events = std::move(events);
     std::cout << std::fixed << std::setprecision(1) << "touchline_match: " << summary.frames << " frames, "
               << summary.sim_s << " s simulated in " << summary.wall_s << " s (x"
               << (summary.wall_s > 0 ? summary.sim_s / summary.wall_s : 0) << " real time), score "
               << match.game().score[0] << ":" << match.game().score[1] << ", truth hash "
               << transport::hex_hash(summary.truth_hash) << "\n";
     if (!summary_path.empty())
-      apps::write_summary_json(summary_path, match, summary, seed, apps::InProcessExtras{std::move(events), play->world_wall_s(), process_cpu_s() - start_cpu_s});
+      apps::write_summary_json(summary_path, match, summary, seed,
+                               apps::InProcessExtras{play->world_wall_s(), process_cpu_s() - start_cpu_s});
     return summary.interrupted ? 128 + g_stop_signal : 0;
   } catch (const std::exception& e) {
     log->error("{}", e.what());

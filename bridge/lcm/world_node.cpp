@@ -314,6 +314,7 @@ class WorldNode {
       if (def_.progress) log_.info("{}", describe(event));
     }
     if (!events.empty()) publish_game_state(false); // the game changed: tell the robots and tools at once
+    summary_.events.insert(summary_.events.end(), events.begin(), events.end());
   }
 
   static constexpr int kFinishedRepeats = 5;

@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <sstream>
+#include <string>
 #include <vector>
 
 #include <spdlog/logger.h>
@@ -13,6 +14,7 @@
 
 #include "touchline/lcm/bus.hpp"
 #include "touchline/lcm/robot_node.hpp"
+#include "touchline/lcm/world_messages.hpp"
 #include "touchline/lcm/world_node.hpp"
 #include "touchline/robot/robot.hpp"
 #include "touchline/robot/robot_def.hpp"
@@ -40,11 +42,14 @@ class WalkAndTalk : public api::Behaviour {
 struct Played {
   transport::RunSummary summary;
   std::vector<bool> over;
+  std::vector<match_event_t> heard; ///< every TL_EVENT a listener on the bus decoded
 };
 
-Played play(uint64_t seed, double duration_s) {
-  sim::WorldConfig config = sim::load_world_config("", {"match.team_size=1", "rules.referee=false",
-                                                        "match.duration_s=" + std::to_string(duration_s)});
+/// Plays with the referee off unless `rules` says otherwise (its "rules.*" settings).
+Played play(uint64_t seed, double duration_s, std::vector<std::string> rules = {"rules.referee=false"}) {
+  rules.push_back("match.team_size=1");
+  rules.push_back("match.duration_s=" + std::to_string(duration_s));
+  sim::WorldConfig config = sim::load_world_config("", rules);
   sim::Match match(config, seed);
   transport::Bus bus("memq://", transport::MatchKey::random());
   std::ostringstream lines;
@@ -58,6 +63,12 @@ Played play(uint64_t seed, double duration_s) {
   // memq:// drops a message that nobody subscribes to when it is sent: this keeps the joins
   // queued until the world, which subscribes when it starts, takes them.
   bus.subscribe(transport::kJoinChannel, [](const transport::BusMessage&) {});
+  std::vector<match_event_t> heard;
+  bus.subscribe(transport::kEventChannel, [&heard](const transport::BusMessage& m) {
+    match_event_t event;
+    transport::decode(m.payload, static_cast<int>(m.payload_size), m.channel, event);
+    heard.push_back(event);
+  });
   std::vector<std::unique_ptr<robot::Robot>> robots;
   std::vector<std::unique_ptr<transport::RobotNode>> nodes;
   for (int team = 0; team < 2; ++team) {
@@ -67,7 +78,8 @@ Played play(uint64_t seed, double duration_s) {
     nodes.push_back(std::make_unique<transport::RobotNode>(*robots.back(), robot_def, bus, log));
     nodes.back()->request_join(); // answered inside the world's loop below
   }
-  Played played{transport::run_world(match, world, bus, log), {}};
+  Played played{transport::run_world(match, world, bus, log), {}, {}};
+  played.heard = std::move(heard);
   for (const auto& node : nodes) played.over.push_back(node->match_over());
   EXPECT_EQ(bus.counters().unauthenticated, 0) << lines.str();
   EXPECT_EQ(bus.counters().handler_failures, 0) << lines.str();
@@ -89,4 +101,18 @@ TEST(WorldNodeOverMemq, TheSameSeedGivesTheSameMatch) {
   const Played first = play(7, 1.0);
   EXPECT_EQ(first.summary.frames, 30);
   EXPECT_EQ(play(7, 1.0).summary.truth_hash, first.summary.truth_hash);
+}
+
+TEST(WorldNodeOverMemq, TheSummaryKeepsEveryEventItPublished) {
+  // The launcher reports goals, penalties and falls from the summary, not from the bus,
+  // which may drop some of them under load.
+  const Played played = play(7, 2.0, {"rules.initial_s=0", "rules.ready_s=0.5", "rules.set_s=0.5"});
+  ASSERT_GE(played.heard.size(), 2u); // READY, SET, PLAYING
+  ASSERT_EQ(played.summary.events.size(), played.heard.size());
+  for (size_t i = 0; i < played.heard.size(); ++i) {
+    const match_event_t kept = transport::to_msg(played.summary.events[i]);
+    EXPECT_EQ(kept.utime, played.heard[i].utime) << i;
+    EXPECT_EQ(kept.kind, played.heard[i].kind) << i;
+    EXPECT_EQ(kept.text, played.heard[i].text) << i;
+  }
 }

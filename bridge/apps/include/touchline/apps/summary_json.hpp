@@ -15,17 +15,15 @@
 
 namespace touchline::apps {
 
-/// What only the in-process match adds: it has no bus for the events, and it can tell
-/// the world's time from the robots'.
+/// What only the in-process match adds: it can tell the world's time from the robots'.
 struct InProcessExtras {
-  std::vector<sim::MatchEvent> events; ///< every event of the match, oldest first
   double world_wall_s = 0; ///< wall seconds spent in the world, not in robot code
   double cpu_s = 0;        ///< CPU seconds the process spent on the match (any load beside it aside)
 };
 
-/// Writes the summary of `match`, run as `s` with `seed`, to `path`; with `extras` also
+/// Writes the summary of `match`, run as `s` with `seed`, to `path`, with s.events as
 /// "match_events" (each as the world node publishes it on TL_EVENT: utime, kind, team,
-/// player, text), "world_wall_s" and "physics_rtf" (simulated seconds per wall second of
+/// player, text); with `extras` also "world_wall_s" and "physics_rtf" (simulated seconds per wall second of
 /// the world alone: the fastest the match could run with free robots), "cpu_s" and
 /// "cpu_rtf" (simulated seconds per CPU second: the rtf on a core of its own). Throws
 /// std::runtime_error if the file cannot be written.

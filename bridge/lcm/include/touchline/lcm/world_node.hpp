@@ -7,6 +7,7 @@
 #include <spdlog/fwd.h>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "touchline/lcm/bus.hpp"
 #include "touchline/lcm/codec.hpp"
@@ -54,6 +55,9 @@ struct RunSummary {
   int64_t handler_failures = 0; ///< messages whose handling failed: dropped
   int64_t resent_senses = 0;    ///< senses sent again to late robots
   bool interrupted = false; ///< stopped by SIGINT/SIGTERM
+  /// Every event published on TL_EVENT, oldest first: the world's own record, which a
+  /// listener on the bus may have missed part of (UDP drops packets under load).
+  std::vector<sim::MatchEvent> events;
 };
 
 /// Opens the bus at def.lcm_url and runs the match to its end. Messages for the user go to
