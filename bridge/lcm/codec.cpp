@@ -5,6 +5,8 @@
 #include <chrono>
 #include <cmath>
 
+#include "touchline/angles.hpp"
+
 namespace touchline::transport {
 
 pose2d_t to_lcm(const Pose2D& p) {
@@ -140,6 +142,7 @@ sense_t to_lcm(const SenseFrame& frame) {
     s.touch_left = r.touch.left;
     s.touch_right = r.touch.right;
     s.touch_back = r.touch.back;
+    s.gyro_turn_rad = r.gyro_turn_rad;
     s.penalised = r.penalised;
     s.fallen = r.fallen;
     s.placed = r.placed;
@@ -213,6 +216,10 @@ SenseFrame from_lcm(const sense_t& m) {
     r.touch.left = s.touch_left;
     r.touch.right = s.touch_right;
     r.touch.back = s.touch_back;
+    check_finite(s.gyro_turn_rad, "gyro_turn_rad", what);
+    if (std::fabs(s.gyro_turn_rad) > kPi)
+      throw MalformedMessage(what + ": gyro_turn_rad " + std::to_string(s.gyro_turn_rad) + " is not in [-pi, pi]");
+    r.gyro_turn_rad = s.gyro_turn_rad;
     r.penalised = s.penalised;
     r.fallen = s.fallen;
     r.placed = s.placed;

@@ -44,7 +44,7 @@ void LocalisationAdapter::tick(const SenseFrame& frame, const RobotSense& sense,
     localiser_->reset(sense.truth);
   }
   const api::AbsCoord& odometry = blackboard.motion.odometry;
-  localiser_->frame(frame.utime, Pose2D{odometry.x, odometry.y, odometry.theta}, sense.seen);
+  localiser_->frame(frame.utime, Pose2D{odometry.x, odometry.y, odometry.theta}, sense.seen, sense.gyro_turn_rad);
   localiser_->write(blackboard.localisation); // in the world frame: the landmark map is team 0's
   if (sense.id.team == 1) to_team_frame(blackboard.localisation);
 }

@@ -94,6 +94,9 @@ SenseFrame Match::sense() {
     sense.sonar_left = sonar.left;
     sense.sonar_right = sonar.right;
     sense.touch = perception_.touch(me, all);
+    const float turn_rad =
+        robot.frame_start_heading_rad ? normalise_angle(me.body.theta_rad - *robot.frame_start_heading_rad) : 0.f;
+    sense.gyro_turn_rad = perception_.gyro_turn(me, turn_rad, frame_);
     sense.penalised = penalised(id);
     sense.fallen = fallen(robot);
     sense.placed = std::exchange(robot.placed, false);
@@ -194,6 +197,7 @@ bool Match::steps_towards_winner(const OnField& robot, const TickMotion& motion)
 }
 
 void Match::advance() {
+  for (auto& [id, robot] : on_field_) robot.frame_start_heading_rad = world_.robot(robot.world_index).body.theta_rad;
   std::vector<TickMotion> motions(static_cast<size_t>(world_.robot_count()));
   std::vector<TickMotion> legs(motions.size());
   for (int tick = 0; tick < ticks_in_frame(frame_); ++tick) {

@@ -133,6 +133,12 @@ SonarReading Perception::sonar(const Viewer& me, const std::vector<Viewer>& robo
   return reading;
 }
 
+float Perception::gyro_turn(const Viewer& me, float turn_rad, int64_t frame) const {
+  auto draws = keyed_draws(seed_, DrawStream::kInertial, frame, viewer_id(me));
+  const double noise_rad = static_cast<double>(def_.gyro_turn_sd_rad) * gaussian(draws);
+  return normalise_angle(static_cast<float>(static_cast<double>(turn_rad) + noise_rad));
+}
+
 Touch Perception::touch(const Viewer& me, const std::vector<Viewer>& robots) const {
   Touch touch;
   for (const Viewer& other : robots)

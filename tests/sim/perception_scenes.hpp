@@ -18,6 +18,7 @@ inline PerceptionDef exact() {
   def.noise.robot_miss_probability = 0;
   def.noise.phantom_ball_probability = 0;
   def.sonar_noise_sd_mm = 0;
+  def.gyro_turn_sd_rad = 0;
   return def;
 }
 

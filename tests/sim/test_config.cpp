@@ -137,7 +137,7 @@ TEST(Config, UnknownKeyNamesWhatWouldBeRight) {
   EXPECT_NE(key.find("(the keys of [field]: length_mm, width_mm,"), std::string::npos) << key;
   EXPECT_EQ(key.find("ball_diameter_mm"), std::string::npos) << key;
   const std::string section = config_error([] { load_world_config("", {"feild.length_mm=9000"}); });
-  EXPECT_NE(section.find("(the sections: field, physics, match, camera, noise, sonar, touch, rules, comm)"),
+  EXPECT_NE(section.find("(the sections: field, physics, match, camera, noise, sonar, touch, inertial, rules, comm)"),
             std::string::npos)
       << section;
 }

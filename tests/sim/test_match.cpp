@@ -71,6 +71,23 @@ TEST(Match, AnActMovesTheRobotByItsFootMotions) {
   EXPECT_NEAR(moved, 5.f * static_cast<float>(ticks), 0.05f);
 }
 
+TEST(Match, TheGyroFeelsTheBodysTurnOverTheLastFrameWhateverTurnedIt) {
+  sim::WorldConfig config = small_config();
+  config.perception.gyro_turn_sd_rad = 0;
+  sim::Match match(config);
+  match.join({0, 1}, 9, 0);
+  match.start();
+  EXPECT_EQ(match.sense().robots[0].gyro_turn_rad, 0.f); // no frame before the first
+  const Pose2D start = match.sense().robots[0].truth;
+  match.advance();
+  // Turned by something other than its own steps (a push, a foot caught on a post).
+  match.world().place_robot(0, {start.x_mm, start.y_mm, normalise_angle(start.theta_rad + 0.3f)});
+  EXPECT_NEAR(match.sense().robots[0].gyro_turn_rad, 0.3f, 1e-5f);
+  EXPECT_NEAR(match.sense().robots[0].gyro_turn_rad, 0.3f, 1e-5f); // the frame's, however often asked
+  match.advance();
+  EXPECT_EQ(match.sense().robots[0].gyro_turn_rad, 0.f); // still since
+}
+
 TEST(Match, StaleAndUnknownActsAreIgnored) {
   sim::Match match(small_config());
   match.join({0, 1}, 9, 0);

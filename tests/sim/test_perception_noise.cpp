@@ -191,6 +191,26 @@ TEST(PerceptionNoise, SonarNoiseHasTheConfiguredSigma) {
   EXPECT_NEAR(m.mean, 500, 4 * 20 / std::sqrt(n));
 }
 
+TEST(PerceptionNoise, GyroNoiseHasTheConfiguredSigmaAndEachFrameItsOwnDraw) {
+  PerceptionDef def = exact();
+  def.gyro_turn_sd_rad = 0.01f;
+  Perception perception(kField, def, 12);
+  const Viewer me = viewer(0, 1, 0, 0, 0);
+  std::vector<double> turns;
+  const int n = 20000;
+  for (int i = 0; i < n; ++i) turns.push_back(perception.gyro_turn(me, 0.1f, i));
+  const Moments m = moments(turns);
+  std::printf("  gyro turn of 0.1 rad: mean %.5f rad, sd %.5f rad (model 0.01 rad, %+.2f %%)\n", m.mean, m.sd,
+              100 * (m.sd / 0.01 - 1));
+  EXPECT_NEAR(m.sd / 0.01, 1.0, 0.03);
+  EXPECT_NEAR(m.mean, 0.1, 4 * 0.01 / std::sqrt(n));
+  EXPECT_EQ(perception.gyro_turn(me, 0.1f, 7), perception.gyro_turn(me, 0.1f, 7)); // keyed: asked again, the same
+  EXPECT_NE(perception.gyro_turn(me, 0.1f, 7), perception.gyro_turn(viewer(0, 2, 0, 0, 0), 0.1f, 7));
+  // A half turn and noise stay an angle; without noise the gyro is the turn.
+  EXPECT_LE(std::fabs(perception.gyro_turn(me, kPi, 3)), kPi);
+  EXPECT_EQ(Perception(kField, exact(), 12).gyro_turn(me, -0.25f, 3), -0.25f);
+}
+
 /// Every number of a frame's percepts, as bits.
 std::vector<uint32_t> bits(const std::vector<Percept>& percepts) {
   std::vector<uint32_t> out;

@@ -177,6 +177,8 @@ struct RobotSense {
   std::vector<Observation> seen;      ///< the camera's observations this frame
   float sonar_left = 1, sonar_right = 1; ///< nearest obstacle, fraction of the sonar range (1: none)
   Touch touch;                        ///< where other robots touch it this frame
+  float gyro_turn_rad = 0;            ///< the inertial unit's yaw change since the last frame, + anticlockwise
+                                      ///< (the body's true turn, pushes included, plus gyro noise)
   bool penalised = false;             ///< off the field, serving a penalty
   bool fallen = false;                ///< lying on the ground (getting up takes time)
   std::vector<TeamMessageFrame> messages; ///< teammates' messages arriving this frame

@@ -29,6 +29,7 @@ enum class DrawStream : uint64_t {
   kCamera,       ///< who: the viewer, what: the object (kind, id)
   kPhantomBall,  ///< who: the viewer
   kSonar,        ///< who: the listener
+  kInertial,     ///< who: the robot
 };
 
 /// Names a robot in a draw key: team and player, distinct for every robot.

@@ -23,8 +23,13 @@ void write_localisation(const PoseFilter& pose, const BallFilter& ball, api::Loc
 Localiser::Localiser(const LocalisationDef& def, const Pose2D& initial)
     : pose_(def.field, def.pose, initial), ball_(def.ball) {}
 
-void Localiser::frame(int64_t utime_us, const Pose2D& odometry, const std::vector<Observation>& seen) {
-  if (last_odometry_) pose_.predict(odometry_delta(*last_odometry_, odometry));
+void Localiser::frame(int64_t utime_us, const Pose2D& odometry, const std::vector<Observation>& seen,
+                      std::optional<float> gyro_turn_rad) {
+  if (last_odometry_) {
+    OdometryDelta moved = odometry_delta(*last_odometry_, odometry);
+    if (gyro_turn_rad) moved.dtheta_rad = *gyro_turn_rad;
+    pose_.predict(moved);
+  }
   last_odometry_ = odometry;
   const double dt_s = last_utime_us_ ? static_cast<double>(utime_us - *last_utime_us_) * 1e-6 : 0.0;
   last_utime_us_ = utime_us;

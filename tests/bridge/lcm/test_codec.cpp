@@ -119,6 +119,7 @@ TEST(Codec, SenseSurvivesEncodeAndDecode) {
   second.active = false;
   second.truth = {300, -200, -2.f};
   second.touch.front_right = second.touch.back = true;
+  second.gyro_turn_rad = -0.125f;
   in.robots = {first, second};
   const auto bytes = encode(transport::to_lcm(in));
   sense_t msg;
@@ -133,7 +134,22 @@ TEST(Codec, SenseSurvivesEncodeAndDecode) {
   const Touch touch = out.find({1, 4})->touch;
   EXPECT_TRUE(touch.front_right && touch.back);
   EXPECT_FALSE(touch.front_left || touch.left || touch.right);
+  EXPECT_EQ(out.find({1, 4})->gyro_turn_rad, -0.125f);
   EXPECT_EQ(out.find({0, 2}), nullptr);
+}
+
+TEST(Codec, AGyroTurnThatIsNoAngleIsMalformed) {
+  for (const float bad : {std::nanf(""), 3.5f, -3.5f}) {
+    sense_t msg = transport::to_lcm(sample_sense());
+    ASSERT_FALSE(msg.robots.empty());
+    msg.robots[0].gyro_turn_rad = bad;
+    try {
+      transport::from_lcm(msg);
+      FAIL() << "took a gyro turn of " << bad;
+    } catch (const MalformedMessage& e) {
+      EXPECT_NE(std::string(e.what()).find("gyro_turn_rad"), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(Codec, TheGameWithItsSetPlaySurvivesEncodeAndDecode) {

@@ -38,6 +38,37 @@ TEST(Localiser, FollowsOdometryChangesNotTheOdometryFrame) {
   EXPECT_NEAR(out.robotPos.theta, 0.2f, 1e-5f);
 }
 
+TEST(Localiser, TurnsByTheGyroNotByTheOdometry) {
+  // Its foot caught on a post, the robot turned 0.4 rad while the walk thought it walked straight.
+  Localiser localiser(LocalisationDef{}, Pose2D{});
+  const Pose2D odo0{500.f, 200.f, 1.0f};
+  localiser.frame(0, odo0, {}, 0.f);
+  localiser.frame(33333, synthetic::compose(odo0, {100.0, 0.0, 0.0}), {}, 0.4f);
+  api::LocalisationBlackboard out;
+  localiser.write(out);
+  EXPECT_NEAR(out.robotPos.x, 100.f, 1e-2f); // the steps still come from the odometry
+  EXPECT_NEAR(out.robotPos.theta, 0.4f, 1e-5f);
+}
+
+TEST(Localiser, ARobotPutDownIsWhereItWasPutInThatFrame) {
+  // The frame it was put down in moved it by nothing: its walk's steps and the referee's
+  // turning it are in the pose it was put down at already.
+  Localiser localiser(LocalisationDef{}, Pose2D{});
+  const Pose2D odo0{0.f, 0.f, 0.f};
+  localiser.frame(0, odo0, {});
+  const Pose2D put{-2000.f, 2000.f, -1.5708f};
+  localiser.reset(put);
+  const Pose2D odo1 = synthetic::compose(odo0, {50.0, 0.0, 0.1});
+  localiser.frame(33333, odo1, {}, 1.5f);
+  api::LocalisationBlackboard out;
+  localiser.write(out);
+  EXPECT_FLOAT_EQ(out.robotPos.x, put.x_mm);
+  EXPECT_FLOAT_EQ(out.robotPos.theta, put.theta_rad);
+  localiser.frame(66666, synthetic::compose(odo1, {100.0, 0.0, 0.0}), {}, 0.f); // then on from there
+  localiser.write(out);
+  EXPECT_NEAR(out.robotPos.y, put.y_mm - 100.f, 1e-2f); // facing -y
+}
+
 TEST(Localiser, WritesTheBallFromThePoseEstimate) {
   const Pose2D truth{-1000.f, 0.f, 0.f};  // facing team 1's goal from our half
   Localiser localiser(LocalisationDef{}, truth);

@@ -1,12 +1,12 @@
 #pragma once
 // The localisation adapter: where the robot believes it and the ball are. By default the
-// filters (EKF pose, Kalman ball) fed by odometry and the camera's landmarks; with
+// filters (EKF pose, Kalman ball) fed by odometry, the gyro's turn and the camera's landmarks; with
 // `perfect`, the robot's pose is the truth and the ball is placed from what the camera
 // saw. Either way the filter starts where the robot was put down and restarts when it
 // comes back from a penalty or the referee places it (robots know where the rules put them).
 // The Blackboard's field frame is the team's own, as on the robot: +x towards the
 // opponent goal. The world's frame is team 0's, so team 1's beliefs are turned by pi.
-// Reads: blackboard.motion.odometry, the sensed observations, the sensed truth (perfect
+// Reads: blackboard.motion.odometry, the sensed gyro turn and observations, the sensed truth (perfect
 // mode; placements). Writes: blackboard.localisation.
 #include <optional>
 

@@ -58,6 +58,10 @@ class Perception {
   /// Where the other robots in `robots` touch `me` (sim/touch.hpp): no noise, no misses.
   Touch touch(const Viewer& me, const std::vector<Viewer>& robots) const;
 
+  /// `me`'s gyro over the frame before `frame`: the body's true turn `turn_rad` plus
+  /// Gaussian noise (gyro_turn_sd_rad), normalised to [-pi, pi].
+  float gyro_turn(const Viewer& me, float turn_rad, int64_t frame) const;
+
   /// observe(), sonar() and touch() for each robot in `robots`.
   std::vector<Percept> perceive(const std::vector<Viewer>& robots, const BallTruth& ball, int64_t frame) const;
 

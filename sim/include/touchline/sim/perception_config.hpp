@@ -44,6 +44,10 @@ struct PerceptionDef {
   /// [sonar] Whether the goal posts echo as well as other robots' bodies.
   bool sonar_sees_goal_posts = true;
   TouchDef touch;                   ///< [touch]: foot bumpers and arm contact
+  /// [inertial] Gaussian noise on the gyro's yaw change over one frame: a random walk of
+  /// the integrated heading, 0.002 rad a frame is 0.011 rad after a second and 0.09 rad
+  /// after a minute. 0: the body's exact turn.
+  float gyro_turn_sd_rad = 0.002f;  ///< rad per frame
 };
 
 /// Binds [camera], [noise], [sonar] and [touch] keys (e.g. "noise.ball_miss_probability").

@@ -32,12 +32,21 @@ class Localiser {
 
   /// One camera frame at simulated time `utime_us`: `odometry` is the walk's
   /// dead-reckoned pose now (MotionBlackboard::odometry; only its change since the last
-  /// frame is used), `seen` the camera's observations this frame.
-  void frame(int64_t utime_us, const Pose2D& odometry, const std::vector<Observation>& seen);
+  /// frame is used), `seen` the camera's observations this frame. With `gyro_turn_rad`
+  /// (the inertial unit's turn since the last frame) the body turned by that, not by the
+  /// odometry's turn: the walk knows only the steps it commanded, the gyro also feels a
+  /// push or a foot caught on a post turning the robot.
+  void frame(int64_t utime_us, const Pose2D& odometry, const std::vector<Observation>& seen,
+             std::optional<float> gyro_turn_rad = std::nullopt);
 
   /// Re-places the robot at `pose` with the def's initial sigmas (e.g. returning from a
-  /// penalty, where the rules say). The odometry reference is kept.
-  void reset(const Pose2D& pose) { pose_.reset(pose); }
+  /// penalty, where the rules say). The robot is there now: the next frame moves it by
+  /// nothing (neither the odometry nor the gyro since the last frame, which may hold the
+  /// referee turning it), and its odometry is the reference from then on.
+  void reset(const Pose2D& pose) {
+    pose_.reset(pose);
+    last_odometry_.reset();
+  }
 
   void write(api::LocalisationBlackboard& out) const { write_localisation(pose_, ball_, out); }
 
