@@ -94,7 +94,8 @@ TEST(PerceptionConfig, BadValuesAreOneLineErrorsNamingTheKey) {
   EXPECT_EQ(error_after("sonar.range_mm=0"), "sonar.range_mm must be in (0, 1000000] (got 0)");
   EXPECT_EQ(error_after("camera.occluder_radius_mm=0"), ""); // 0 switches occlusion off
   EXPECT_EQ(error_after("sonar.sees_goal_posts=false"), "");
-  EXPECT_EQ(error_after("inertial.gyro_turn_sd_rad=-0.001"), "inertial.gyro_turn_sd_rad must be in [0, 1] (got -0.001)");
+  EXPECT_EQ(error_after("inertial.gyro_turn_sd_rad=-0.001"),
+            "inertial.gyro_turn_sd_rad must be in [0, 1] (got -0.001)");
   EXPECT_EQ(error_after("inertial.gyro_turn_sd_rad=0"), ""); // the body's exact turn
   EXPECT_NE(error_after("sonar.sees_goal_posts=maybe").find("sonar.sees_goal_posts"), std::string::npos);
 }

@@ -121,7 +121,8 @@ class Match {
     int64_t fallen_until_utime = -1; ///< lying on the ground until then
     std::vector<RobotId> stopped_by; ///< lost ball contests this frame to these: no step towards them
     bool placed = false;             ///< put down by the referee since the last sense
-    std::optional<float> frame_start_heading_rad; ///< the body's heading when the last frame began (the gyro's turn is from there)
+    /// The body's heading when the last frame began: the gyro's turn is from there.
+    std::optional<float> frame_start_heading_rad;
   };
   void place(RobotId id);
   bool may_move(RobotId id, const OnField& robot) const;

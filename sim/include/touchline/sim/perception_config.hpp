@@ -50,7 +50,7 @@ struct PerceptionDef {
   float gyro_turn_sd_rad = 0.002f;  ///< rad per frame
 };
 
-/// Binds [camera], [noise], [sonar] and [touch] keys (e.g. "noise.ball_miss_probability").
+/// Binds [camera], [noise], [sonar], [touch] and [inertial] keys (e.g. "noise.ball_miss_probability").
 void bind(IniSchema& schema, PerceptionDef& def);
 
 /// Checks ranges (probabilities in [0, 1], non-negative noise, a field of view in
