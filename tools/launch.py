@@ -111,7 +111,10 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
     p.add_argument("--speed", type=float, default=1.0, help="real-time multiple for realtime/free")
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--robot-timeout-ms", type=int, help="wall time a robot may take to answer a frame before "
-                   "the world marks it inactive (sim_world's default: 1000)")
+                   "the world marks it inactive (sim_world's default: 1000), unless its shim still runs")
+    p.add_argument("--live-robot-timeout-ms", type=int, help="wall time a robot whose shim still runs (a busy "
+                   "machine, a debugger's breakpoint) may take, so that load does not change the match "
+                   "(sim_world's default: 60000)")
     p.add_argument("--restart-dead", action="store_true",
                    help="restart a robot_shim that dies during the match, once the world has marked its robot "
                         "inactive (default: the match goes on without it); not in free mode")
@@ -153,8 +156,10 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
             p.error(f"--team{team} {spec} needs --runswift-dir (a rUNSWift behaviours folder)")
     if args.duration is not None and args.duration <= 0:
         p.error("--duration must be > 0")
-    if args.robot_timeout_ms is not None and args.robot_timeout_ms <= 0:
-        p.error("--robot-timeout-ms must be > 0")
+    for option in ("--robot-timeout-ms", "--live-robot-timeout-ms"):
+        value = getattr(args, option[2:].replace("-", "_"))
+        if value is not None and value <= 0:
+            p.error(f"{option} must be > 0")
     for option in ("--tick-timeout-ms", "--snapshot-every"):
         value = getattr(args, option[2:].replace("-", "_"))
         if value is not None and value < 0:
@@ -164,7 +169,8 @@ def parse_args(argv: list[str]) -> argparse.Namespace:
                 "silent robot inactive, so a restarted shim could not take it over")
     if args.in_process:
         for option, given in (("--mode", args.mode != "lockstep"), ("--restart-dead", args.restart_dead),
-                              ("--robot-timeout-ms", args.robot_timeout_ms is not None)):
+                              ("--robot-timeout-ms", args.robot_timeout_ms is not None),
+                              ("--live-robot-timeout-ms", args.live_robot_timeout_ms is not None)):
             if given:
                 p.error(f"--in-process plays lockstep in one process: {option} does not apply")
     return args
@@ -205,6 +211,7 @@ def world_options(a: argparse.Namespace) -> list:
     """sim_world's options for the match (its --check takes the same)."""
     return [*match_options(a), "--mode", a.mode, "--speed", a.speed,
             *(["--robot-timeout-ms", a.robot_timeout_ms] if a.robot_timeout_ms else []),
+            *(["--live-robot-timeout-ms", a.live_robot_timeout_ms] if a.live_robot_timeout_ms else []),
             "--lcm-url", a.lcm_url]
 
 

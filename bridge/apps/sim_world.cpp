@@ -59,6 +59,8 @@ void print_summary(const sim::Match& match, const transport::RunSummary& s) {
               << s.future << "), late " << s.stale << ", unauthenticated " << s.unauthenticated
               << ", failed " << s.handler_failures << "\n";
   if (s.resent_senses) std::cout << "  senses sent again to late robots: " << s.resent_senses << "\n";
+  if (s.slow_answers)
+    std::cout << "  answers waited for past --robot-timeout-ms (their shim still ran): " << s.slow_answers << "\n";
 }
 
 } // namespace
@@ -87,7 +89,12 @@ int main(int argc, char** argv) {
     ("mode", po::value(&mode)->default_value(mode), "lockstep (wait for every robot, as fast as possible), realtime (lockstep paced to --speed x wall clock) or free (never wait, paced; late answers apply late)")
     ("speed", number_option("--speed", &node.speed, 0.01, 1000.0), "real-time multiple for realtime and free modes, 0.01..1000")
     ("robot-timeout-ms", number_option("--robot-timeout-ms", &node.robot_timeout_ms, int64_t{1}, int64_t{3600000}),
-     "wall time a robot may take to answer a frame before it is marked inactive, 1..3600000 ms")
+     "wall time a robot may take to answer a frame before it is marked inactive, 1..3600000 ms; lockstep and "
+     "realtime: unless its robot_shim still runs on this machine (--live-robot-timeout-ms)")
+    ("live-robot-timeout-ms",
+     number_option("--live-robot-timeout-ms", &node.live_robot_timeout_ms, int64_t{1}, int64_t{86400000}),
+     "lockstep and realtime: wall time a robot whose robot_shim still runs on this machine (a busy machine, a "
+     "debugger's breakpoint) may take to answer a frame, so that load does not change the match, 1..86400000 ms")
     ("join-timeout", number_option("--join-timeout", &node.join_timeout_s, 0.01, 86400.0),
      "wall seconds to wait for the robots to join, 0.01..86400")
     ("seed", number_option("--seed", &seed, uint64_t{0}, std::numeric_limits<uint64_t>::max()),

@@ -70,6 +70,7 @@ void write_summary_json(const std::string& path, const sim::Match& match, const 
       {"unauthenticated", s.unauthenticated},
       {"handler_failures", s.handler_failures},
       {"resent_senses", s.resent_senses},
+      {"slow_answers", s.slow_answers},
       {"interrupted", s.interrupted},
       {"comm",
        {{"sent", match.comm().sent()},

@@ -150,15 +150,50 @@ class WorldNode {
 
   /// Waits for this frame's answers. The sense goes out again to whoever is late every
   /// resend_ms, so a lost packet (sense or act: a robot answers a repeated frame with its
-  /// answer again) costs milliseconds, not the timeout. With no robot active (all of them
-  /// timed out at once) the world waits for every robot on the field, so that any of them
-  /// can come back instead of the match racing on without anyone.
+  /// answer again) costs milliseconds, not the timeout. A robot late by robot_timeout_ms is
+  /// timed out, unless (lockstep and realtime) its robot_shim still runs: then it is waited
+  /// for up to live_robot_timeout_ms, since a robot timed out stands still and the match
+  /// would no longer be its seed's. With no robot active (all of them timed out at once) the
+  /// world waits for every robot on the field, so that any of them can come back instead of
+  /// the match racing on without anyone.
   void wait_for_answers(const std::vector<uint8_t>& sense_wire) {
     std::vector<RobotId> expected = match_.active_robots();
     if (expected.empty()) expected = match_.robots_on_field();
+    const int64_t start = wall_us();
+    const int64_t timeout_us = def_.robot_timeout_ms * 1000;
+    const int64_t live_deadline = start + std::max(def_.live_robot_timeout_ms * 1000, timeout_us);
+    barrier_.begin(match_.frame(), expected, start, timeout_us);
+    std::vector<std::pair<RobotId, bool>> late; // timed out, and whether its shim still ran
+    std::set<RobotId> waited;                   // waited for past robot_timeout_ms
+    for (int64_t now = await_barrier(sense_wire); !barrier_.missing().empty(); now = await_barrier(sense_wire)) {
+      for (RobotId id : barrier_.missing()) {
+        const bool runs = shim_runs(id);
+        if (runs && now < live_deadline) {
+          if (waited.insert(id).second && summary_.slow_answers++ < kMaxReports)
+            log_.warn("{} has not answered frame {} in {} ms, but its robot_shim still runs: waiting for it up to "
+                      "{} ms, so that the match stays its seed's",
+                      sim::describe(id), match_.frame(), def_.robot_timeout_ms, def_.live_robot_timeout_ms);
+          continue;
+        }
+        barrier_.give_up(id);
+        late.emplace_back(id, runs);
+      }
+      barrier_.wait_until(std::min(now + timeout_us, live_deadline));
+    }
+    for (const auto& [id, ran] : late) {
+      match_.time_out(id);
+      report(id, robot_status_t::TIMED_OUT,
+             "no answer within " + std::to_string(ran ? def_.live_robot_timeout_ms : def_.robot_timeout_ms) +
+                 " ms at frame " + std::to_string(match_.frame()) + (ran ? " though its robot_shim runs" : "") +
+                 "; it stands still and the match goes on");
+    }
+  }
+
+  /// Handles messages, sending the sense again to the late every resend_ms, until every
+  /// robot the barrier waits for answered or its deadline passed; returns the time then.
+  int64_t await_barrier(const std::vector<uint8_t>& sense_wire) {
     const int64_t resend_us = def_.resend_ms * 1000;
     int64_t now = wall_us();
-    barrier_.begin(match_.frame(), expected, now, def_.robot_timeout_ms * 1000);
     for (int64_t next_resend = now + resend_us; !barrier_.complete(now); now = wall_us()) {
       if (now >= next_resend) {
         bus_.publish_sealed(kSenseChannel, sense_wire);
@@ -168,12 +203,13 @@ class WorldNode {
       const int64_t wait_us = std::min(barrier_.remaining_us(now), next_resend - now);
       bus_.handle(static_cast<int>(std::max<int64_t>(1, (wait_us + 999) / 1000)));
     }
-    for (RobotId id : barrier_.missing()) {
-      match_.time_out(id);
-      report(id, robot_status_t::TIMED_OUT,
-             "no answer within " + std::to_string(def_.robot_timeout_ms) + " ms at frame " +
-                 std::to_string(match_.frame()) + "; it stands still and the match goes on");
-    }
+    return now;
+  }
+
+  /// Whether the robot_shim that joined as `id` still runs on this machine (def_.shim_runs).
+  bool shim_runs(RobotId id) const {
+    const sim::Member* member = match_.roster().find(id);
+    return member && def_.shim_runs && def_.shim_runs(member->pid);
   }
 
   /// Holds the frame until the wall clock catches up with `speed` x simulated time,

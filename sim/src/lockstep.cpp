@@ -17,6 +17,10 @@ bool FrameBarrier::answer(RobotId id, int64_t frame) {
   return true;
 }
 
+void FrameBarrier::give_up(RobotId id) { waiting_.erase(id); }
+
+void FrameBarrier::wait_until(int64_t deadline_us) { deadline_us_ = deadline_us; }
+
 bool FrameBarrier::complete(int64_t now_us) const {
   return waiting_.empty() || now_us >= deadline_us_;
 }

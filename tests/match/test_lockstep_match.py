@@ -112,15 +112,40 @@ def test_a_killed_shim_is_reported_and_the_match_goes_on_and_it_may_rejoin(tmp_p
     assert returned["frames_answered"] + returned["frames_missed"] == summary["frames"]
 
 
+def test_a_robot_stopped_past_its_timeout_is_waited_for_while_its_shim_runs(tmp_path):
+    # A busy machine or a debugger's breakpoint holds a shim longer than --robot-timeout-ms.
+    # Timing it out would make it stand still, and the match would not be its seed's.
+    import signal
+    import time
+    hashes = []
+    for stop_s in (0.0, 0.6):
+        # Realtime at 1x: the stop lands mid-match (in lockstep the match could end first).
+        match = start_world(tmp_path, 2, 3.0, "--robot-timeout-ms", "100", "--mode", "realtime", "--speed", "1")
+        robots = [start_robot(match, 0, 1, "walk", forward=100), start_robot(match, 1, 1, "walk", forward=100)]
+        if stop_s:
+            match.world.wait_for_line("kick-off")
+            robots[0].popen.send_signal(signal.SIGSTOP)
+            time.sleep(stop_s)  # the stop itself, not a wait for anything
+            robots[0].popen.send_signal(signal.SIGCONT)
+        summary = match.finish()
+        if stop_s:
+            assert summary["slow_answers"] >= 1, summary  # the stop was longer than the timeout
+        for team in (0, 1):
+            entry = robot_entry(summary, team, 1)
+            assert entry["active"] and entry["frames_missed"] == 0, entry
+        hashes.append(summary["truth_hash"])
+    assert hashes[0] == hashes[1]
+
+
 def test_when_every_robot_stops_at_once_the_world_waits_and_they_come_back(tmp_path):
     import signal
-    match = start_world(tmp_path, 2, 4.0, "--robot-timeout-ms", "200")
+    match = start_world(tmp_path, 2, 4.0, "--robot-timeout-ms", "200", "--live-robot-timeout-ms", "300")
     robots = [start_robot(match, 0, 1, "walk", forward=100), start_robot(match, 1, 1, "walk", forward=100)]
     match.world.wait_for_line("kick-off")
     for robot in robots:
         robot.popen.send_signal(signal.SIGSTOP)
-    match.world.wait_for_line("team 0 player 1 no answer within 200 ms")
-    match.world.wait_for_line("team 1 player 1 no answer within 200 ms")
+    match.world.wait_for_line("team 0 player 1 no answer within 300 ms")
+    match.world.wait_for_line("team 1 player 1 no answer within 300 ms")
     for robot in robots:
         robot.popen.send_signal(signal.SIGCONT)
     match.world.wait_for_line("team 0 player 1 answered again")

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <vector>
+
 using touchline::RobotId;
 using touchline::sim::FrameBarrier;
 
@@ -50,4 +52,18 @@ TEST(FrameBarrier, UnexpectedRobotDoesNotDisturbTheWait) {
   barrier.begin(1, {{0, 1}}, 0, 1000);
   EXPECT_TRUE(barrier.answer({1, 4}, 1)); // e.g. a rejoining robot
   EXPECT_FALSE(barrier.complete(1));
+}
+
+TEST(FrameBarrier, PastTheDeadlineItWaitsLongerForTheRobotsItDoesNotGiveUp) {
+  FrameBarrier barrier;
+  barrier.begin(4, {{0, 1}, {1, 1}}, 0, 1000);
+  ASSERT_TRUE(barrier.complete(1000));
+  barrier.give_up({0, 1}); // its process is gone
+  barrier.wait_until(5000); // the other's still runs
+  EXPECT_FALSE(barrier.complete(1000));
+  EXPECT_EQ(barrier.remaining_us(1000), 4000);
+  EXPECT_EQ(barrier.missing(), (std::vector<RobotId>{{1, 1}}));
+  EXPECT_TRUE(barrier.answer({1, 1}, 4));
+  EXPECT_TRUE(barrier.complete(1000));
+  EXPECT_TRUE(barrier.missing().empty());
 }

@@ -176,6 +176,8 @@ def test_bad_options_are_one_line(tmp_path):
         "inactive, so a restarted shim could not take it over")
     result = launch("--robot-timeout-ms", 0)
     assert result.returncode == 2 and "--robot-timeout-ms must be > 0" in result.stderr
+    result = launch("--live-robot-timeout-ms", -5)
+    assert result.returncode == 2 and "--live-robot-timeout-ms must be > 0" in result.stderr
 
 
 def test_team_specs_carry_skill_parameters():

@@ -71,7 +71,9 @@ def test_with_restart_dead_a_killed_shim_is_restarted_and_takes_its_robot_back(t
 
 
 def test_a_stopped_shim_is_timed_out_and_rejoins_when_continued(tmp_path, status):
-    match = Launch(*PACED, "--duration", 8, "--restart-dead", "--json", tmp_path / "m.json")
+    # Stopped past --live-robot-timeout-ms: a shim that still runs is waited for until then.
+    match = Launch(*PACED, "--duration", 8, "--restart-dead", "--live-robot-timeout-ms", 1500,
+                   "--json", tmp_path / "m.json")
     match.wait_for_line("launch: kick-off,")
     stopped = match.shim(0, 1)
     os.kill(stopped, signal.SIGSTOP)
@@ -79,7 +81,7 @@ def test_a_stopped_shim_is_timed_out_and_rejoins_when_continued(tmp_path, status
     os.kill(stopped, signal.SIGCONT)
     status.wait_for(0, 1, status.type.REJOINED)
     assert match.wait() == 0, match.output()  # stopped is not dead: nothing restarted, nothing lost
-    assert any("team 0 player 1 no answer within 1000 ms" in line for line in match.stdout), match.output()
+    assert any("team 0 player 1 no answer within 1500 ms" in line for line in match.stdout), match.output()
     assert any("team 0 player 1 answered again" in line for line in match.stdout), match.output()
     summary = summary_of(tmp_path)
     assert robot(summary, 0, 1)["active"] and summary["shim_deaths"] == []

@@ -12,6 +12,7 @@
 #include <spdlog/logger.h>
 #include <spdlog/sinks/ostream_sink.h>
 
+#include "touchline/join_t.hpp"
 #include "touchline/lcm/bus.hpp"
 #include "touchline/lcm/robot_node.hpp"
 #include "touchline/lcm/world_messages.hpp"
@@ -43,11 +44,19 @@ struct Played {
   transport::RunSummary summary;
   std::vector<bool> over;
   std::vector<match_event_t> heard; ///< every TL_EVENT a listener on the bus decoded
+  std::string log;                  ///< the world's lines to the user
+  int64_t silent_missed = 0;        ///< frames the silent robot (if any) missed
 };
 
-/// Plays with the referee off unless `rules` says otherwise (its "rules.*" settings).
-Played play(uint64_t seed, double duration_s, std::vector<std::string> rules = {"rules.referee=false"}) {
-  rules.push_back("match.team_size=1");
+/// A robot_shim that joined as team 1 player 2 from process `pid` and never answers.
+constexpr int kSilentPid = 4242;
+
+/// Plays with the referee off unless `rules` says otherwise (its "rules.*" settings); with
+/// `world` the world node's settings, and a silent robot beside the two that play when
+/// `silent`.
+Played play(uint64_t seed, double duration_s, std::vector<std::string> rules = {"rules.referee=false"},
+            transport::WorldNodeDef world = {}, bool silent = false) {
+  rules.push_back(silent ? "match.team_size=2" : "match.team_size=1");
   rules.push_back("match.duration_s=" + std::to_string(duration_s));
   sim::WorldConfig config = sim::load_world_config("", rules);
   sim::Match match(config, seed);
@@ -55,8 +64,7 @@ Played play(uint64_t seed, double duration_s, std::vector<std::string> rules = {
   std::ostringstream lines;
   spdlog::logger log("world_node_test", std::make_shared<spdlog::sinks::ostream_sink_st>(lines));
 
-  transport::WorldNodeDef world;
-  world.robots = 2;
+  world.robots = silent ? 3 : 2;
   world.progress = false;
   transport::RobotNodeDef robot_def;
   robot_def.snapshot_every = 0;
@@ -78,8 +86,18 @@ Played play(uint64_t seed, double duration_s, std::vector<std::string> rules = {
     nodes.push_back(std::make_unique<transport::RobotNode>(*robots.back(), robot_def, bus, log));
     nodes.back()->request_join(); // answered inside the world's loop below
   }
-  Played played{transport::run_world(match, world, bus, log), {}, {}};
+  if (silent) {
+    join_t join;
+    join.team = 1;
+    join.player = 2;
+    join.instance = 99;
+    join.pid = kSilentPid;
+    bus.publish(transport::kJoinChannel, join);
+  }
+  Played played{transport::run_world(match, world, bus, log), {}, {}, {}, 0};
   played.heard = std::move(heard);
+  played.log = lines.str();
+  if (silent) played.silent_missed = match.roster().find({1, 2})->frames_missed;
   for (const auto& node : nodes) played.over.push_back(node->match_over());
   EXPECT_EQ(bus.counters().unauthenticated, 0) << lines.str();
   EXPECT_EQ(bus.counters().handler_failures, 0) << lines.str();
@@ -115,4 +133,38 @@ TEST(WorldNodeOverMemq, TheSummaryKeepsEveryEventItPublished) {
     EXPECT_EQ(kept.kind, played.heard[i].kind) << i;
     EXPECT_EQ(kept.text, played.heard[i].text) << i;
   }
+}
+
+TEST(WorldNodeOverMemq, ARobotWhoseShimRunsIsWaitedForUpToTheLiveTimeout) {
+  // A busy machine, or a breakpoint: timing the robot out would change the match.
+  transport::WorldNodeDef world;
+  world.robot_timeout_ms = 20;
+  world.live_robot_timeout_ms = 200;
+  std::vector<int> asked;
+  world.shim_runs = [&asked](int pid) {
+    asked.push_back(pid);
+    return pid == kSilentPid;
+  };
+  const Played played = play(7, 0.5, {"rules.referee=false"}, world, /*silent=*/true);
+  ASSERT_FALSE(asked.empty());
+  EXPECT_EQ(asked.front(), kSilentPid);
+  EXPECT_EQ(played.summary.slow_answers, 1); // then it is inactive, and no longer waited for
+  EXPECT_NE(played.log.find("team 1 player 2 has not answered frame 0 in 20 ms, but its robot_shim still runs"),
+            std::string::npos) << played.log;
+  EXPECT_NE(played.log.find("team 1 player 2 no answer within 200 ms at frame 0 though its robot_shim runs"),
+            std::string::npos) << played.log;
+  EXPECT_EQ(played.silent_missed, played.summary.frames);
+}
+
+TEST(WorldNodeOverMemq, ARobotWhoseShimIsGoneIsTimedOutAtTheRobotTimeout) {
+  transport::WorldNodeDef world;
+  world.robot_timeout_ms = 20;
+  world.live_robot_timeout_ms = 60000; // never reached: the test would take a minute
+  world.shim_runs = [](int) { return false; };
+  const Played played = play(7, 0.5, {"rules.referee=false"}, world, /*silent=*/true);
+  EXPECT_EQ(played.summary.slow_answers, 0);
+  EXPECT_NE(played.log.find("team 1 player 2 no answer within 20 ms at frame 0; it stands still"), std::string::npos)
+      << played.log;
+  EXPECT_EQ(played.log.find("still runs"), std::string::npos) << played.log;
+  EXPECT_EQ(played.silent_missed, played.summary.frames);
 }

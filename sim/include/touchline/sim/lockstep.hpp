@@ -18,6 +18,12 @@ class FrameBarrier {
   /// Records an answer; returns false (and ignores it) when it is not for this frame.
   bool answer(RobotId id, int64_t frame);
 
+  /// Stops waiting for `id` (its answer to this frame no longer counts as awaited).
+  void give_up(RobotId id);
+  /// Moves the deadline to `deadline_us`: past the first one, the robots still missing are
+  /// waited for longer (the world's lockstep waits for a robot whose process still runs).
+  void wait_until(int64_t deadline_us);
+
   /// True when all expected robots answered, or the deadline has passed.
   bool complete(int64_t now_us) const;
   /// Expected robots that have not answered.

@@ -4,6 +4,7 @@
 // timeout; free: never waits, late answers apply late), steps the world and publishes
 // world truth, game state and robot status.
 #include <cstdint>
+#include <functional>
 #include <spdlog/fwd.h>
 #include <optional>
 #include <string>
@@ -12,6 +13,7 @@
 #include "touchline/lcm/bus.hpp"
 #include "touchline/lcm/codec.hpp"
 #include "touchline/lcm/match_key.hpp"
+#include "touchline/lcm/process_probe.hpp"
 #include "touchline/gamecontroller/receiver.hpp"
 #include "touchline/sim/match.hpp"
 
@@ -28,7 +30,12 @@ struct WorldNodeDef {
   MatchKey key;                  ///< the match secret every message is authenticated with
   Pacing pacing = Pacing::kLockstep;
   double speed = 1.0;            ///< real-time multiple for kRealtime and kFree
-  int64_t robot_timeout_ms = 1000; ///< wall time a robot may take to answer a frame
+  int64_t robot_timeout_ms = 1000; ///< wall time a robot may take to answer a frame ...
+  /// ... or, lockstep and realtime, this long while its robot_shim still runs on this machine
+  /// (shim_runs: a busy machine or a debugger's breakpoint must not change the match)
+  int64_t live_robot_timeout_ms = 60000;
+  /// Whether the robot_shim of process id `pid` (its join's) still runs; the default asks /proc.
+  std::function<bool(int pid)> shim_runs = [](int pid) { return process_runs(pid, "robot_shim"); };
   int64_t resend_ms = 20;        ///< wall time after which the frame's sense goes out again to late robots
   int robots = 8;                ///< joins to wait for before kick-off
   double join_timeout_s = 30;    ///< wall time to wait for them
@@ -54,6 +61,7 @@ struct RunSummary {
   int64_t unauthenticated = 0;  ///< messages without a valid tag (not from this match): dropped
   int64_t handler_failures = 0; ///< messages whose handling failed: dropped
   int64_t resent_senses = 0;    ///< senses sent again to late robots
+  int64_t slow_answers = 0;     ///< answers waited for past robot_timeout_ms (their shim still ran)
   bool interrupted = false; ///< stopped by SIGINT/SIGTERM
   /// Every event published on TL_EVENT, oldest first: the world's own record, which a
   /// listener on the bus may have missed part of (UDP drops packets under load).
