@@ -9,38 +9,25 @@
 #include <tuple>
 #include <utility>
 
+#include "box2d_units.hpp"
 #include "touchline/angles.hpp"
 #include "touchline/hash.hpp"
+#include "world_legs.hpp"
 
 namespace touchline::sim {
 
-namespace {
+using detail::FootVelocity;
+using detail::pose_of;
+using detail::rotate;
+using detail::to_m;
+using detail::to_mm;
 
-// Box2D is tuned for objects of 0.1-10 m, so the world runs in metres; the API is in mm.
-float to_m(float mm) { return mm / 1000.f; }
-float to_mm(float m) { return m * 1000.f; }
-b2Vec2 to_m(float x_mm, float y_mm) { return b2Vec2(to_m(x_mm), to_m(y_mm)); }
+namespace {
 
 // Thickness of the boundary walls beyond the carpet edge (only their inner face matters).
 constexpr float kWallThicknessM = 0.5f;
 // Thickness of the nets, centred on their nominal lines.
 constexpr float kNetThicknessM = 0.02f;
-/// A foot's turn counts as this much travel at its toe when telling the lifted foot, mm/rad.
-constexpr float kFootTurnRadius_mm = 80.f;
-/// A foot commanded to travel less than this in a tick stands (the solver's and a joint
-/// walk's jitter), mm.
-constexpr float kLiftedTravel_mm = 0.01f;
-
-b2Vec2 rotate(float theta, b2Vec2 v) {
-  const float c = std::cos(theta), s = std::sin(theta);
-  return b2Vec2(c * v.x - s * v.y, s * v.x + c * v.y);
-}
-
-Pose2D pose_of(const b2Body& body) {
-  const b2Vec2 p = body.GetPosition();
-  return Pose2D{to_mm(p.x), to_mm(p.y), normalise_angle(body.GetAngle())};
-}
-
 /// A polygon of `half` extents whose rounded skin (b2_polygonRadius, 1 cm) ends at those
 /// extents, so the collision outline is the real outline rather than 1 cm larger.
 b2PolygonShape skinned_box(b2Vec2 half, b2Vec2 centre = b2Vec2(0, 0)) {
@@ -85,17 +72,9 @@ class ContactRules : public b2ContactListener {
 } // namespace
 
 struct World::Impl {
-  struct Robot {
+  /// A robot: its feet and the walk's stance its legs hold them in (world_legs.hpp).
+  struct Robot : detail::Legs {
     RobotId id;
-    b2Body* left = nullptr;
-    b2Body* right = nullptr;
-    /// Where the walk's own commands alone would have put the feet since the robot was
-    /// placed (square, around the origin): the stance its legs hold the feet in. Their twist
-    /// is what hold_twist leaves alone; a foot the walk moves returns to its place beside the
-    /// other (return_to_stance).
-    Pose2D walk_left, walk_right;
-    /// The twist (right foot's heading less the left's) the walk's own commands made, rad.
-    float walk_twist_rad() const { return normalise_angle(walk_right.theta_rad - walk_left.theta_rad); }
   };
 
   Field field;
@@ -226,18 +205,6 @@ struct World::Impl {
     return foot;
   }
 
-  /// The legs: a rope between the foot centres, slack until they are max_foot_spread_mm
-  /// apart (Box2D's distance joint with only its upper limit), so a push that would part
-  /// the feet drags the other foot along, as it drags a Nao's whole body.
-  void add_legs(b2Body* left, b2Body* right) {
-    b2DistanceJointDef legs;
-    legs.Initialize(left, right, left->GetPosition(), right->GetPosition());
-    legs.minLength = 0.f; // Box2D raises it to its linear slop: the feet may pass each other
-    legs.maxLength = to_m(physics.max_foot_spread_mm);
-    legs.stiffness = legs.damping = 0.f; // no spring: only the limit acts
-    world.CreateJoint(&legs);
-  }
-
   /// Foot poses of a robot standing at `body`: left at +sep/2, right at -sep/2 (body y).
   std::pair<Pose2D, Pose2D> feet_at(const Pose2D& body) const {
     const b2Vec2 offset = rotate(body.theta_rad, b2Vec2(0, foot_separation_mm / 2));
@@ -260,12 +227,6 @@ struct World::Impl {
     ball->SetLinearVelocity(speed <= dv ? b2Vec2(0, 0) : (1.f - dv / speed) * v);
   }
 
-  struct FootVelocity {
-    b2Body* foot;
-    b2Vec2 linear;
-    float angular;
-  };
-
   /// velocity = displacement / dt, displacement rotated from the body frame at the tick start.
   static FootVelocity foot_velocity(b2Body* foot, float body_theta, const FootMotion& m) {
     const b2Vec2 v = rotate(body_theta, b2Vec2(to_m(m.dx_mm) / kMotionTick_s, to_m(m.dy_mm) / kMotionTick_s));
@@ -276,48 +237,6 @@ struct World::Impl {
   static Pose2D moved(const Pose2D& pose, float body_theta, const FootMotion& m) {
     const b2Vec2 d = rotate(body_theta, b2Vec2(m.dx_mm, m.dy_mm));
     return Pose2D{pose.x_mm + d.x, pose.y_mm + d.y, normalise_angle(pose.theta_rad + m.dtheta_rad)};
-  }
-
-  /// A foot's pose after its velocity command for one tick.
-  static Pose2D after_command(const FootVelocity& c) {
-    const Pose2D now = pose_of(*c.foot);
-    return Pose2D{now.x_mm + to_mm(c.linear.x) * kMotionTick_s, now.y_mm + to_mm(c.linear.y) * kMotionTick_s,
-                  normalise_angle(now.theta_rad + c.angular * kMotionTick_s)};
-  }
-
-  /// The legs place a lifted foot: the foot the walk moves this tick (the other stands)
-  /// also moves, at up to stance_return_mm_s and stance_return_rad_s, towards where the
-  /// walk's own steps put it beside the other foot (r.walk_left, r.walk_right). Contacts
-  /// move feet apart from where the walk put them (a foot blocked by another robot's, a
-  /// foot dragged by the legs' rope); without this nothing brings them back, and a robot's
-  /// stance drifts for the rest of the match (a kick's foot 100 mm off where the walk put
-  /// it misses the ball). A standing foot is never moved: only the legs' swing corrects.
-  void return_to_stance(const Robot& r, const TickMotion& m, FootVelocity& left, FootVelocity& right) const {
-    if (physics.stance_return_mm_s <= 0 && physics.stance_return_rad_s <= 0) return;
-    const auto travel = [](const FootMotion& f) {
-      return std::hypot(f.dx_mm, f.dy_mm) + kFootTurnRadius_mm * std::fabs(f.dtheta_rad);
-    };
-    const float left_travel = travel(m.left), right_travel = travel(m.right);
-    if (std::max(left_travel, right_travel) < kLiftedTravel_mm) return; // standing, or both feet still
-    const bool left_lifted = left_travel > right_travel;
-    FootVelocity& lifted = left_lifted ? left : right;
-    const FootVelocity& standing = left_lifted ? right : left;
-    // Where the walk put the lifted foot in the standing one's frame, set on the standing foot.
-    const Pose2D& walk_lifted = left_lifted ? r.walk_left : r.walk_right;
-    const Pose2D& walk_standing = left_lifted ? r.walk_right : r.walk_left;
-    const b2Vec2 offset = rotate(-walk_standing.theta_rad, b2Vec2(walk_lifted.x_mm - walk_standing.x_mm,
-                                                                   walk_lifted.y_mm - walk_standing.y_mm));
-    const Pose2D base = after_command(standing);
-    const b2Vec2 placed = rotate(base.theta_rad, offset);
-    const Pose2D at = after_command(lifted);
-    b2Vec2 error(base.x_mm + placed.x - at.x_mm, base.y_mm + placed.y - at.y_mm);
-    const float max_mm = physics.stance_return_mm_s * kMotionTick_s;
-    if (error.Length() > max_mm) error *= max_mm / error.Length();
-    const float max_rad = physics.stance_return_rad_s * kMotionTick_s;
-    const float turn_error = base.theta_rad + walk_lifted.theta_rad - walk_standing.theta_rad - at.theta_rad;
-    const float turn = std::clamp(normalise_angle(turn_error), -max_rad, max_rad);
-    lifted.linear += to_m(error.x / kMotionTick_s, error.y / kMotionTick_s);
-    lifted.angular += turn / kMotionTick_s;
   }
 
   void step(const std::vector<TickMotion>& motions, const std::vector<TickMotion>& legs) {
@@ -336,7 +255,7 @@ struct World::Impl {
       const float walk_theta = mean_heading(r.walk_left.theta_rad, r.walk_right.theta_rad);
       r.walk_left = moved(r.walk_left, walk_theta, legs[i].left);
       r.walk_right = moved(r.walk_right, walk_theta, legs[i].right);
-      return_to_stance(r, motions[i], commands[commands.size() - 2], commands.back());
+      detail::return_to_stance(physics, r, motions[i], commands[commands.size() - 2], commands.back());
     }
     const int substeps = std::max(1, physics.substeps);
     const float h = kMotionTick_s / static_cast<float>(substeps);
@@ -349,32 +268,8 @@ struct World::Impl {
     // A foot without a command next tick stays put.
     for (const FootVelocity& c : commands) set_velocity(c.foot, b2Vec2(0, 0), 0.f);
     if (physics.max_foot_twist_rad > 0)
-      for (const Robot& r : robots) hold_twist(r);
+      for (const Robot& r : robots) detail::hold_twist(physics, r);
     ++ticks;
-  }
-
-  /// The right foot's heading less the left's, rad.
-  static float twist_of(const Robot& r) { return normalise_angle(r.right->GetAngle() - r.left->GetAngle()); }
-
-  /// Turns both feet of `r` towards each other, equally (their mean heading stays where it
-  /// was), until one is at most max_foot_twist_rad from the other, or as far as the walk
-  /// itself turned them apart (r.walk_twist_rad()): only a contact's twist is held, never the
-  /// walk's own (a turning walk's feet open ~0.83 rad). The bound is the walk's twist, not
-  /// the twist before the tick plus the walk's turn in it: that ratchets, a contact's excess
-  /// kept whenever the walk turned the same way, up to the feet pi apart.
-  /// The legs' own limit holds even the walk's twist: a Nao's hip yaw-pitch joint turns its
-  /// feet apart by at most 65.6 deg (1.15 rad). A walk whose state parted from the feet (it
-  /// was mid-turn when the referee put the robot down) could otherwise twist them pi apart.
-  void hold_twist(const Robot& r) const {
-    constexpr float kSolverSlack_rad = 1e-4f; // the solver's rounding on an untouched foot: no correction
-    constexpr float kLegTwistLimit_rad = 1.15f;
-    const float twist = twist_of(r);
-    const float walk_twist = std::min(std::fabs(r.walk_twist_rad()), kLegTwistLimit_rad);
-    const float bound = std::max(physics.max_foot_twist_rad, walk_twist);
-    if (std::fabs(twist) <= bound + kSolverSlack_rad) return;
-    const float excess = 0.5f * (twist - std::copysign(bound, twist));
-    r.left->SetTransform(r.left->GetPosition(), r.left->GetAngle() + excess);
-    r.right->SetTransform(r.right->GetPosition(), r.right->GetAngle() - excess);
   }
 
   static void set_velocity(b2Body* body, b2Vec2 linear, float angular) {
@@ -402,7 +297,7 @@ int World::add_robot(RobotId id, const Pose2D& body) {
   robot.left = impl_->add_foot(index, left);
   robot.right = impl_->add_foot(index, right);
   std::tie(robot.walk_left, robot.walk_right) = impl_->feet_at(Pose2D{}); // standing square
-  impl_->add_legs(robot.left, robot.right);
+  detail::add_rope(impl_->world, robot, impl_->physics.max_foot_spread_mm);
   impl_->robots.push_back(robot);
   return index;
 }

@@ -1,6 +1,6 @@
-// The world's legs: they hold a robot's feet together (within reach, their headings
-// within the hip's twist) whatever pushes them, and return a lifted foot to where the
-// walk's own steps put it beside the standing one.
+// sim/src/world_legs.cpp, through World: the legs hold a robot's feet together (within
+// reach, their headings within the hip's twist) whatever pushes them, and return a lifted
+// foot to where the walk's own steps put it beside the standing one.
 #include "touchline/sim/world.hpp"
 
 #include <gtest/gtest.h>
