@@ -1,5 +1,5 @@
 """Avoid: walk around robots instead of into them, never through the own goal box, and back
-off when blocked. GoToPose passes every walk it asks for through Avoid.tick.
+off when blocked, staying on the field. GoToPose passes every walk it asks for through Avoid.tick.
 
 Reads: motion.sonarLeft/sonarRight/sonarRange_mm, motion.touch* (the foot bumpers and arms),
 vision.robots, receiver.messages (the teammates' poses), localisation.robotPos,
@@ -34,6 +34,12 @@ slides along it (beside the box, that part becomes a step towards the field, so 
 across the box goes round its front). A robot already in it walks as asked (its target
 takes it out).
 
+The field (every player): a walk that within FIELD_LOOKAHEAD would take the body centre more
+than FIELD_EDGE_SLACK beyond a line loses its part further out over that line; it may still
+walk along the line or back in. The referee penalises a robot 200 mm beyond a line (leaving
+the field, 45 s out): walks to a stale ball on the touchline, round a crowd or backing off
+took strikers out ten times a match.
+
 Make way: a robot standing at its target steps back from an obstacle ahead of it nearer
 than YIELD_DIST (sonar, this frame's sightings, teammates) at YIELD_SPEED (a robot facing
 another at contact counts as pushing it).
@@ -49,7 +55,7 @@ import math
 import actioncommand
 import robot
 
-from .field import OWN_BOX_FRONT_X, OWN_BOX_HALF_WIDTH
+from .field import FIELD_EDGE_SLACK, FIELD_HALF_LENGTH, FIELD_HALF_WIDTH, OWN_BOX_FRONT_X, OWN_BOX_HALF_WIDTH
 from .robot_limits import clampWalk
 from .team_comm import GOALIE_PLAYER, MESSAGE_STALE_US, decodeMessage
 
@@ -59,6 +65,7 @@ AVOID_CLEARANCE = 400.0          # mm: pass obstacle centres this far (bodies to
 MIN_WALK_SPEED = 1.0             # mm/s: slower walks are not steered
 BOX_AVOID_MARGIN = 100.0         # mm: the own goal box grown by this ...
 BOX_LOOKAHEAD = 300.0            # mm: ... is not entered within this along the walk
+FIELD_LOOKAHEAD = 150.0          # mm: no walk takes the body centre FIELD_EDGE_SLACK beyond a line within this
 BLOCKED_OBSTACLE_DIST = 450.0    # mm: an obstacle this near and in the way can block
 BLOCKED_FRAMES = 45              # frames (1.5 s) without progress before backing off
 BLOCKED_PROGRESS = 100.0         # mm: nearer to the target than this is progress
@@ -217,6 +224,29 @@ def keepOutOfOwnBox(pos, forward, left):
     return vx * cosT + vy * sinT, -vx * sinT + vy * cosT
 
 
+def keepOnField(pos, forward, left):
+    """(forward, left) less its part further out over a line when within FIELD_LOOKAHEAD along it
+    the body centre would be more than FIELD_EDGE_SLACK beyond that line."""
+    speed = math.hypot(forward, left)
+    if speed < MIN_WALK_SPEED:
+        return forward, left
+    cosT = math.cos(pos.theta)
+    sinT = math.sin(pos.theta)
+    vx = forward * cosT - left * sinT
+    vy = forward * sinT + left * cosT
+    aheadX = pos.x + vx / speed * FIELD_LOOKAHEAD
+    aheadY = pos.y + vy / speed * FIELD_LOOKAHEAD
+    outX = abs(aheadX) > FIELD_HALF_LENGTH + FIELD_EDGE_SLACK and aheadX * vx > 0.0  # further out over a goal line ...
+    outY = abs(aheadY) > FIELD_HALF_WIDTH + FIELD_EDGE_SLACK and aheadY * vy > 0.0  # ... or a touchline
+    if not outX and not outY:
+        return forward, left
+    if outX:
+        vx = 0.0
+    if outY:
+        vy = 0.0
+    return vx * cosT + vy * sinT, -vx * sinT + vy * cosT
+
+
 def blocker(found, forward, left):
     """(x, y) of the nearest obstacle within BLOCKED_OBSTACLE_DIST that the walk heads towards, or None."""
     best = None
@@ -258,6 +288,7 @@ class Avoid:
         forward, left = keepOffTouches(blackboard.motion, forward, left)
         if blackboard.gameController.playerNumber != GOALIE_PLAYER:
             forward, left = keepOutOfOwnBox(blackboard.localisation.robotPos, forward, left)
+        forward, left = keepOnField(blackboard.localisation.robotPos, forward, left)
         return actioncommand.walk(forward, left, 0.0 if backing else body.turn)
 
     def stand(self, blackboard):
@@ -278,6 +309,7 @@ class Avoid:
         forward, left = keepOffTouches(blackboard.motion, forward, left)
         if blackboard.gameController.playerNumber != GOALIE_PLAYER:
             forward, left = keepOutOfOwnBox(blackboard.localisation.robotPos, forward, left)
+        forward, left = keepOnField(blackboard.localisation.robotPos, forward, left)
         return actioncommand.walk(forward, left)
 
     def blocked(self, found, forward, left, targetDist):

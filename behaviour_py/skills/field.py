@@ -8,16 +8,17 @@ OWN_GOAL_X = -3000.0             # mm: the own goal line's centre
 FIELD_HALF_LENGTH = 3000.0       # mm
 FIELD_HALF_WIDTH = 2000.0        # mm
 FIELD_MARGIN = 200.0             # mm: supporters' targets stay this far inside the lines
+FIELD_EDGE_SLACK = 50.0          # mm: no target or walk takes a robot further beyond a line (the referee penalises 200)
 OWN_BOX_FRONT_X = -2400.0        # mm: the own goal box is 600 deep ...
 OWN_BOX_HALF_WIDTH = 1100.0      # mm: ... and 2200 wide
 BOX_MARGIN = 200.0               # mm: supporters' targets stay this far out of the box
 SHOOTING_PATH_CLEARANCE = 500.0  # mm: supporters in front of the ball stay this far off the ball-goal line
 
 
-def clampToField(x, y):
-    """(x, y) moved inside the field lines by FIELD_MARGIN."""
-    limitX = FIELD_HALF_LENGTH - FIELD_MARGIN
-    limitY = FIELD_HALF_WIDTH - FIELD_MARGIN
+def clampToField(x, y, margin=FIELD_MARGIN):
+    """(x, y) moved inside the field lines by `margin` (negative: to at most -margin beyond them)."""
+    limitX = FIELD_HALF_LENGTH - margin
+    limitY = FIELD_HALF_WIDTH - margin
     return min(max(x, -limitX), limitX), min(max(y, -limitY), limitY)
 
 

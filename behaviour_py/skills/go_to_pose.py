@@ -6,8 +6,9 @@ robot that must end facing the other way: a defender falling back, facing the ba
 Algorithm 4.3: turn on the spot while the heading is off by more than TURN_FIRST_ANGLE, else
 walk the forward/left decomposition of the target while turning to the target heading.
 Which is faster is estimated from the walk's limits (directTime, forwardFirstTime).
-Arrived (with hysteresis): stand, making way for a robot ahead. Every walk goes through Avoid
-(avoid.py): around robots, out of the own goal box, backing off when blocked.
+Arrived (with hysteresis): stand, making way for a robot ahead. A target beyond a line (behind
+a ball on it) is moved to FIELD_EDGE_SLACK beyond it. Every walk goes through Avoid (avoid.py):
+around robots, out of the own goal box, on the field, backing off when blocked.
 """
 import math
 
@@ -15,6 +16,7 @@ import actioncommand
 import robot
 
 from .avoid import Avoid
+from .field import FIELD_EDGE_SLACK, clampToField
 from .robot_limits import MAX_FORWARD, MAX_TURN, clampTurn, clampWalk
 
 WALK_GAIN = 2.0                        # 1/s: walk request (mm/s) per mm of position error
@@ -56,8 +58,7 @@ class GoToPose:
         self.avoid = Avoid()
 
     def setTarget(self, x, y, theta):
-        self.x = x
-        self.y = y
+        self.x, self.y = clampToField(x, y, -FIELD_EDGE_SLACK)  # behind a ball on a line, not off the field
         self.theta = theta
 
     def tick(self, blackboard):

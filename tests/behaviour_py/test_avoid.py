@@ -8,7 +8,7 @@ from boards import board, message, seenRobot
 
 from skills.avoid import (AVOID_CLEARANCE, BACK_OFF_FRAMES, BLOCKED_FRAMES, SEEN_MEMORY_US, SONAR_SIDE_Y, TOUCH_DIST,
                           TOUCH_FRONT_BEARING, Avoid, keepOffTouches,
-                          keepOutOfOwnBox, obstacles, remember, steer)
+                          keepOnField, keepOutOfOwnBox, obstacles, remember, steer)
 from skills.go_to_pose import GoToPose
 from skills.team_comm import ROLE_DEFENDER, TeamInfo, encodeMessage
 
@@ -187,6 +187,28 @@ def test_the_goalie_and_a_robot_in_the_box_walk_as_asked():
     assert goalie.forward == pytest.approx(300.0)
     player = Avoid().tick(board(outside, player=3), walk(), 2000.0)
     assert player.forward == pytest.approx(0.0, abs=1e-3)
+
+
+# The field
+def test_a_walk_over_a_touchline_loses_its_part_out_and_keeps_its_part_along():
+    atLine = robot.AbsCoord(0.0, 1950.0, math.pi / 2)  # on the +y touchline's inside, facing out
+    assert keepOnField(atLine, 300.0, 0.0) == pytest.approx((0.0, 0.0), abs=1e-3)  # straight out: stops
+    assert keepOnField(atLine, 200.0, 200.0) == pytest.approx((0.0, 200.0), abs=1e-3)  # out and along -x: only along
+    assert keepOnField(atLine, -300.0, 0.0) == pytest.approx((-300.0, 0.0), abs=1e-3)  # back in
+    assert keepOnField(robot.AbsCoord(0.0, 1700.0, math.pi / 2), 300.0, 0.0) == (300.0, 0.0)  # not past the slack
+
+
+def test_beyond_a_goal_line_a_robot_may_only_walk_back_in():
+    beyond = robot.AbsCoord(-3100.0, 500.0, 0.0)  # behind the own goal line, facing the field
+    assert keepOnField(beyond, -200.0, 0.0) == pytest.approx((0.0, 0.0), abs=1e-3)
+    assert keepOnField(beyond, 200.0, 0.0) == pytest.approx((200.0, 0.0), abs=1e-3)
+    assert keepOnField(beyond, -200.0, 100.0) == pytest.approx((0.0, 100.0), abs=1e-3)
+
+
+def test_every_player_the_goalie_too_stays_on_the_field():
+    atLine = (0.0, -1980.0, 0.0)  # on the -y touchline, facing along it
+    for player in (1, 2):
+        assert Avoid().tick(board(atLine, player=player), walk(0.0, -200.0), 2000.0).left == pytest.approx(0.0, abs=1e-3)
 
 
 # Backing off

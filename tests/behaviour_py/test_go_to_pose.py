@@ -6,6 +6,7 @@ import pytest
 import robot
 from boards import board
 
+from skills.field import FIELD_EDGE_SLACK
 from skills.go_to_pose import GoToPose
 
 WALK = robot.ActionType.WALK
@@ -101,3 +102,11 @@ def test_face_ball_turns_to_the_ball_not_theta():
     skill = GoToPose(0.0, 0.0, 0.0, faceBall=True)
     assert velocities(skill.tick(board((0.0, 0.0, 0.0), ball=(0.0, 1000.0)))) == pytest.approx((0.0, 0.0, 1.5))
     assert skill.tick(board((0.0, 0.0, math.pi / 2), ball=(0.0, 1000.0))).body.actionType == STAND
+
+
+def test_a_target_off_the_field_is_walked_to_only_just_beyond_the_line():
+    # Behind a ball on the touchline the target lies out; the referee penalises 200 mm out.
+    beside = GoToPose(0.0, 2300.0, 0.0)
+    assert beside.tick(board((0.0, 2000.0 + FIELD_EDGE_SLACK, 0.0))).body.actionType == STAND
+    behind = GoToPose(3400.0, -100.0, 0.0)
+    assert behind.tick(board((3000.0 + FIELD_EDGE_SLACK, -100.0, 0.0))).body.actionType == STAND

@@ -158,6 +158,23 @@ WalkVelocity keepOutOfOwnBox(const AbsCoord& pos, float forward, float left) {
   return {vx * cosT + vy * sinT, -vx * sinT + vy * cosT};
 }
 
+WalkVelocity keepOnField(const AbsCoord& pos, float forward, float left) {
+  const float speed = std::hypot(forward, left);
+  if (speed < MIN_WALK_SPEED) return {forward, left};
+  const float cosT = std::cos(pos.theta);
+  const float sinT = std::sin(pos.theta);
+  float vx = forward * cosT - left * sinT;
+  float vy = forward * sinT + left * cosT;
+  const float aheadX = pos.x + vx / speed * FIELD_LOOKAHEAD, aheadY = pos.y + vy / speed * FIELD_LOOKAHEAD;
+  const float limitX = FIELD_HALF_LENGTH + FIELD_EDGE_SLACK, limitY = FIELD_HALF_WIDTH + FIELD_EDGE_SLACK;
+  const bool outX = std::fabs(aheadX) > limitX && aheadX * vx > 0.f; // further out over a goal line ...
+  const bool outY = std::fabs(aheadY) > limitY && aheadY * vy > 0.f; // ... or a touchline
+  if (!outX && !outY) return {forward, left};
+  if (outX) vx = 0.f;
+  if (outY) vy = 0.f;
+  return {vx * cosT + vy * sinT, -vx * sinT + vy * cosT};
+}
+
 std::optional<Obstacle> blocker(const std::vector<Obstacle>& found, float forward, float left) {
   std::optional<Obstacle> best;
   float bestDist = 0;
@@ -193,6 +210,7 @@ ActionCommand::Body Avoid::tick(const Blackboard& blackboard, const ActionComman
   v = keepOffTouches(blackboard.motion, v.forward, v.left);
   if (blackboard.gameController.playerNumber != GOALIE_PLAYER)
     v = keepOutOfOwnBox(blackboard.localisation.robotPos, v.forward, v.left);
+  v = keepOnField(blackboard.localisation.robotPos, v.forward, v.left);
   return actioncommand::walk(v.forward, v.left, backing ? 0.f : body.turn);
 }
 
@@ -219,6 +237,7 @@ ActionCommand::Body Avoid::stand(const Blackboard& blackboard) {
   v = keepOffTouches(blackboard.motion, v.forward, v.left);
   if (blackboard.gameController.playerNumber != GOALIE_PLAYER)
     v = keepOutOfOwnBox(blackboard.localisation.robotPos, v.forward, v.left);
+  v = keepOnField(blackboard.localisation.robotPos, v.forward, v.left);
   return actioncommand::walk(v.forward, v.left);
 }
 

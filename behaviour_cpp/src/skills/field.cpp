@@ -5,9 +5,9 @@
 
 namespace touchline::behaviour::skills {
 
-FieldPoint clampToField(float x, float y) {
-  const float limitX = FIELD_HALF_LENGTH - FIELD_MARGIN;
-  const float limitY = FIELD_HALF_WIDTH - FIELD_MARGIN;
+FieldPoint clampToField(float x, float y, float margin) {
+  const float limitX = FIELD_HALF_LENGTH - margin;
+  const float limitY = FIELD_HALF_WIDTH - margin;
   return {std::min(std::max(x, -limitX), limitX), std::min(std::max(y, -limitY), limitY)};
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "touchline/behaviour/skills/actioncommand.hpp"
+#include "touchline/behaviour/skills/field.hpp"
 #include "touchline/behaviour/skills/robot_limits.hpp"
 
 namespace touchline::behaviour::skills {
@@ -14,8 +15,9 @@ GoToPose::GoToPose(float x, float y, float theta, bool faceBall) : faceBall_(fac
 }
 
 void GoToPose::setTarget(float x, float y, float theta) {
-  x_ = x;
-  y_ = y;
+  const FieldPoint target = clampToField(x, y, -FIELD_EDGE_SLACK); // behind a ball on a line, not off the field
+  x_ = target.x;
+  y_ = target.y;
   theta_ = theta;
 }
 

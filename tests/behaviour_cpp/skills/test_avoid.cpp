@@ -249,6 +249,29 @@ TEST(Avoid, TheGoalieAndARobotInTheBoxWalkAsAsked) {
   EXPECT_NEAR(Avoid().tick(sonarBoard(outside, 1.f, 1.f, 3), walk, 2000.f).forward, 0.f, 1e-3f);
 }
 
+// The field
+TEST(Avoid, AWalkOverATouchlineLosesItsPartOutAndKeepsItsPartAlong) {
+  const AbsCoord atLine{0.f, 1950.f, kPi / 2}; // on the +y touchline's inside, facing out
+  expectVelocity(keepOnField(atLine, 300.f, 0.f), 0.f, 0.f);      // straight out: stops
+  expectVelocity(keepOnField(atLine, 200.f, 200.f), 0.f, 200.f);  // out and along -x: only along
+  expectVelocity(keepOnField(atLine, -300.f, 0.f), -300.f, 0.f);  // back in
+  expectVelocity(keepOnField({0.f, 1700.f, kPi / 2}, 300.f, 0.f), 300.f, 0.f); // out, but not past the slack
+}
+
+TEST(Avoid, BeyondAGoalLineARobotMayOnlyWalkBackIn) {
+  const AbsCoord beyond{-3100.f, 500.f, 0.f}; // behind the own goal line, facing the field
+  expectVelocity(keepOnField(beyond, -200.f, 0.f), 0.f, 0.f);
+  expectVelocity(keepOnField(beyond, 200.f, 0.f), 200.f, 0.f);
+  expectVelocity(keepOnField(beyond, -200.f, 100.f), 0.f, 100.f);
+}
+
+TEST(Avoid, EveryPlayerTheGoalieTooStaysOnTheField) {
+  const AbsCoord atLine{0.f, -1980.f, 0.f}; // on the -y touchline, facing along it
+  const ActionCommand::Body out = touchline::behaviour::actioncommand::walk(0.f, -200.f, 0.f);
+  for (int player : {1, 2})
+    EXPECT_NEAR(Avoid().tick(sonarBoard(atLine, 1.f, 1.f, player), out, 2000.f).left, 0.f, 1e-3f) << player;
+}
+
 // Backing off
 namespace {
 

@@ -7,6 +7,7 @@
 #include "boards.hpp"
 
 using namespace touchline::api;
+using touchline::behaviour::skills::FIELD_EDGE_SLACK;
 using touchline::behaviour::skills::GoToPose;
 using touchline::behaviour::test::board;
 using touchline::behaviour::test::radians;
@@ -100,4 +101,13 @@ TEST(GoToPoseSkill, FaceBallTurnsToTheBallNotTheta) {
   GoToPose skill(0.f, 0.f, 0.f, true);
   expectVelocities(skill.tick(board({0, 0, 0}, 0.f, 1000.f)), 0.f, 0.f, 1.5f);
   EXPECT_EQ(skill.tick(board({0, 0, kPi / 2}, 0.f, 1000.f)).body.actionType, ActionCommand::ActionType::STAND);
+}
+
+TEST(GoToPoseSkill, ATargetOffTheFieldIsWalkedToOnlyJustBeyondTheLine) {
+  // Behind a ball on the touchline the target lies out; the referee penalises 200 mm out.
+  GoToPose beside(0.f, 2300.f, 0.f);
+  EXPECT_EQ(beside.tick(board({0.f, 2000.f + FIELD_EDGE_SLACK, 0.f})).body.actionType, ActionCommand::ActionType::STAND);
+  GoToPose behind(3400.f, -100.f, 0.f);
+  EXPECT_EQ(behind.tick(board({3000.f + FIELD_EDGE_SLACK, -100.f, 0.f})).body.actionType,
+            ActionCommand::ActionType::STAND);
 }

@@ -1,6 +1,6 @@
 #pragma once
 // Avoid: walk around robots instead of into them, never through the own goal box, and back
-// off when blocked; the port of behaviour_py/skills/avoid.py. GoToPose passes every walk it
+// off when blocked, staying on the field; the port of behaviour_py/skills/avoid.py. GoToPose passes every walk it
 // asks for through Avoid::tick.
 //
 // Reads: motion.sonarLeft/sonarRight/sonarRange_mm, motion.touch* (the foot bumpers and arms),
@@ -36,6 +36,12 @@
 // across the box goes round its front). A robot already in it walks as asked (its target
 // takes it out).
 //
+// The field (every player): a walk that within FIELD_LOOKAHEAD would take the body centre more
+// than FIELD_EDGE_SLACK beyond a line loses its part further out over that line; it may still
+// walk along the line or back in. The referee penalises a robot 200 mm beyond a line (leaving
+// the field, 45 s out): walks to a stale ball on the touchline, round a crowd or backing off
+// took strikers out ten times a match.
+//
 // Make way: a robot standing at its target steps back from an obstacle ahead of it nearer
 // than YIELD_DIST (sonar, this frame's sightings, teammates) at YIELD_SPEED (a robot facing
 // another at contact counts as pushing it).
@@ -49,6 +55,7 @@
 #include <optional>
 #include <vector>
 
+#include "touchline/behaviour/skills/field.hpp"
 #include "touchline/behaviour/skills/robot_limits.hpp"
 #include "touchline/robot_api/blackboard.hpp"
 
@@ -60,6 +67,7 @@ inline constexpr float AVOID_CLEARANCE = 400.f;        ///< mm: pass obstacle ce
 inline constexpr float MIN_WALK_SPEED = 1.f;           ///< mm/s: slower walks are not steered
 inline constexpr float BOX_AVOID_MARGIN = 100.f;       ///< mm: the own goal box grown by this ...
 inline constexpr float BOX_LOOKAHEAD = 300.f;          ///< mm: ... is not entered within this along the walk
+inline constexpr float FIELD_LOOKAHEAD = 150.f;        ///< mm: no walk takes the body centre FIELD_EDGE_SLACK beyond a line within this
 inline constexpr float BLOCKED_OBSTACLE_DIST = 450.f;  ///< mm: an obstacle this near and in the way can block
 inline constexpr int BLOCKED_FRAMES = 45;              ///< frames (1.5 s) without progress before backing off
 inline constexpr float BLOCKED_PROGRESS = 100.f;       ///< mm: nearer to the target than this is progress
@@ -110,6 +118,9 @@ std::vector<TouchedSector> touchedSectors(const api::MotionBlackboard& motion);
 WalkVelocity keepOffTouches(const api::MotionBlackboard& motion, float forward, float left);
 /// The walk (forward, left) less its part into the own goal box when it would enter it.
 WalkVelocity keepOutOfOwnBox(const api::AbsCoord& pos, float forward, float left);
+/// (forward, left) less its part further out over a line when within FIELD_LOOKAHEAD along it
+/// the body centre would be more than FIELD_EDGE_SLACK beyond that line.
+WalkVelocity keepOnField(const api::AbsCoord& pos, float forward, float left);
 /// The nearest obstacle within BLOCKED_OBSTACLE_DIST that the walk heads towards, if any.
 std::optional<Obstacle> blocker(const std::vector<Obstacle>& found, float forward, float left);
 

@@ -10,6 +10,7 @@ inline constexpr float OWN_GOAL_X = -3000.f;            ///< mm: the own goal li
 inline constexpr float FIELD_HALF_LENGTH = 3000.f;      ///< mm
 inline constexpr float FIELD_HALF_WIDTH = 2000.f;       ///< mm
 inline constexpr float FIELD_MARGIN = 200.f;            ///< mm: supporters' targets stay this far inside the lines
+inline constexpr float FIELD_EDGE_SLACK = 50.f;         ///< mm: no target or walk takes a robot further beyond a line (the referee penalises 200)
 inline constexpr float OWN_BOX_FRONT_X = -2400.f;       ///< mm: the own goal box is 600 deep ...
 inline constexpr float OWN_BOX_HALF_WIDTH = 1100.f;     ///< mm: ... and 2200 wide
 inline constexpr float BOX_MARGIN = 200.f;              ///< mm: supporters' targets stay this far out of the box
@@ -21,8 +22,8 @@ struct FieldPoint {
   float y = 0;
 };
 
-/// (x, y) moved inside the field lines by FIELD_MARGIN.
-FieldPoint clampToField(float x, float y);
+/// (x, y) moved inside the field lines by `margin` (negative: to at most -margin beyond them).
+FieldPoint clampToField(float x, float y, float margin = FIELD_MARGIN);
 /// (x, y) moved forward out of the own goal box (grown by BOX_MARGIN) if it is in it.
 FieldPoint clampOutOfOwnBox(float x, float y);
 /// (x, y) moved sideways off the line from the ball to (goalX, goalY) when it lies in front

@@ -8,8 +8,9 @@
 // Algorithm 4.3: turn on the spot while the heading is off by more than TURN_FIRST_ANGLE, else
 // walk the forward/left decomposition of the target while turning to the target heading.
 // Which is faster is estimated from the walk's limits (directTime, forwardFirstTime).
-// Arrived (with hysteresis): stand, making way for a robot ahead. Every walk goes through Avoid (avoid.hpp): around robots, out of the
-// own goal box, backing off when blocked.
+// Arrived (with hysteresis): stand, making way for a robot ahead. A target beyond a line (behind
+// a ball on it) is moved to FIELD_EDGE_SLACK beyond it. Every walk goes through Avoid
+// (avoid.hpp): around robots, out of the own goal box, on the field, backing off when blocked.
 #include "touchline/behaviour/skills/avoid.hpp"
 #include "touchline/robot_api/behaviour.hpp"
 
