@@ -19,7 +19,8 @@ import time
 from collections import deque
 
 LINE_EVERY = 0.1   # a plain progress line each tenth of the match
-ETA_WINDOW_S = 10  # wall seconds of history the ETA's real-time factor is measured over
+ETA_WINDOW_S = 10  # wall seconds of history the ETA's real-time factor is measured over ...
+MIN_RATE_SPAN_S = 0.5  # ... once it spans this much (a backlog of messages read in one burst spans none)
 logger = logging.getLogger("launch")
 
 
@@ -64,11 +65,11 @@ class MatchProgress:
         self._bar.start()
 
     def real_time_factor(self) -> float:
-        """Simulated over wall seconds across the window: nan until it spans some time."""
+        """Simulated over wall seconds across the window: nan until it spans MIN_RATE_SPAN_S."""
         if len(self._samples) < 2:
             return math.nan
         (wall0, sim0), (wall1, sim1) = self._samples[0], self._samples[-1]
-        return (sim1 - sim0) / (wall1 - wall0) if wall1 > wall0 else math.nan
+        return (sim1 - sim0) / (wall1 - wall0) if wall1 - wall0 >= MIN_RATE_SPAN_S else math.nan
 
     def eta_s(self) -> float:
         rtf = self.real_time_factor()
