@@ -38,7 +38,7 @@ The field (every player): a walk that within FIELD_LOOKAHEAD would take the body
 than FIELD_EDGE_SLACK beyond a line loses its part further out over that line; it may still
 walk along the line or back in. The referee penalises a robot 200 mm beyond a line (leaving
 the field, 45 s out): walks to a stale ball on the touchline, round a crowd or backing off
-took strikers out ten times a match.
+took four strikers out 12-14 times a match.
 
 Make way: a robot standing at its target steps back from an obstacle ahead of it nearer
 than YIELD_DIST (sonar, this frame's sightings, teammates) at YIELD_SPEED (a robot facing

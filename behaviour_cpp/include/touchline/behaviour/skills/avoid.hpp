@@ -1,7 +1,7 @@
 #pragma once
 // Avoid: walk around robots instead of into them, never through the own goal box, and back
-// off when blocked, staying on the field; the port of behaviour_py/skills/avoid.py. GoToPose passes every walk it
-// asks for through Avoid::tick.
+// off when blocked, staying on the field; the port of behaviour_py/skills/avoid.py. GoToPose
+// passes every walk it asks for through Avoid::tick.
 //
 // Reads: motion.sonarLeft/sonarRight/sonarRange_mm, motion.touch* (the foot bumpers and arms),
 // vision.robots, receiver.messages (the teammates' poses), localisation.robotPos,
@@ -40,7 +40,7 @@
 // than FIELD_EDGE_SLACK beyond a line loses its part further out over that line; it may still
 // walk along the line or back in. The referee penalises a robot 200 mm beyond a line (leaving
 // the field, 45 s out): walks to a stale ball on the touchline, round a crowd or backing off
-// took strikers out ten times a match.
+// took four strikers out 12-14 times a match.
 //
 // Make way: a robot standing at its target steps back from an obstacle ahead of it nearer
 // than YIELD_DIST (sonar, this frame's sightings, teammates) at YIELD_SPEED (a robot facing
