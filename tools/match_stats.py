@@ -12,6 +12,9 @@ TL_TRUTH (where every robot and the ball are); writes nothing.
               time and stoppages count as not moving) is "ball_moving_share".
   playing:    the share of all samples in PLAYING, "playing_share": the most ball_moving_share
               can be, and its divisor for the share of play time the ball moved.
+  contested:  a sample in PLAYING whose ball is not moving while robots of both teams (in
+              play, standing) are within POSSESSION_MM of it: held between them, toe to toe;
+              its share of all samples is "ball_contested_share".
 """
 from __future__ import annotations
 
@@ -31,10 +34,10 @@ BALL_MOVING_MM = 100               # the ball this far from where it was 1 s bef
 
 
 def analyse_log(log: Path) -> dict:
-    """Possession samples per team and stuck seconds per team, from the truth stream, on the
-    field of the match's own TL_MATCH (the first message of its log). Needs the generated
-    LCM types (build/lcm_types/gen/python) on sys.path; a log without TL_MATCH before its
-    first TL_TRUTH raises ValueError."""
+    """Possession samples per team, stuck seconds per team and the ball's shares (moving,
+    playing, contested), from the truth stream, on the field of the match's own TL_MATCH (the
+    first message of its log). Needs the generated LCM types (build/lcm_types/gen/python) on
+    sys.path; a log without TL_MATCH before its first TL_TRUTH raises ValueError."""
     import lcm
     from touchline import game_state_t, match_config_t, world_truth_t
 
@@ -45,7 +48,7 @@ def analyse_log(log: Path) -> dict:
     edge_x = edge_y = None  # the carpet's edges, from TL_MATCH
     truth_frames = 0
     ball_path = []  # the ball's last SAMPLES_PER_S + 1 samples
-    samples = moving_samples = playing_samples = 0
+    samples = moving_samples = playing_samples = contested_samples = 0
     for event in lcm.EventLog(str(log), "r"):
         if event.channel == "TL_MATCH" and edge_x is None:
             match = match_config_t.decode(event.data)
@@ -64,22 +67,28 @@ def analyse_log(log: Path) -> dict:
         truth = world_truth_t.decode(event.data)
         samples += 1
         ball_path = [*ball_path[-SAMPLES_PER_S:], (truth.ball_x_mm, truth.ball_y_mm)]
-        moving_samples += playing and ball_moving(ball_path)
+        moving = playing and ball_moving(ball_path)
+        moving_samples += moving
         playing_samples += playing
         nearest = None
+        near_teams = set()
         for r in truth.robots:
             counts = playing and r.active and not r.penalised and not r.fallen
             if add_sample(history[(r.team, r.player)], r, counts, edge_x, edge_y) is not None:
                 stuck_frames[r.team] += 1
             d = math.hypot(r.body.x_mm - truth.ball_x_mm, r.body.y_mm - truth.ball_y_mm)
-            if counts and d < POSSESSION_MM and (nearest is None or d < nearest[0]):
-                nearest = (d, r.team)
+            if counts and d < POSSESSION_MM:
+                near_teams.add(r.team)
+                if nearest is None or d < nearest[0]:
+                    nearest = (d, r.team)
         if nearest:
             possession[nearest[1]] += 1
+        contested_samples += playing and not moving and len(near_teams) == 2
     return {"possession_frames": [possession[0], possession[1]],
             "stuck_s": [stuck_frames[0] / SAMPLES_PER_S, stuck_frames[1] / SAMPLES_PER_S],
             "ball_moving_share": moving_samples / samples if samples else 0.0,
-            "playing_share": playing_samples / samples if samples else 0.0}
+            "playing_share": playing_samples / samples if samples else 0.0,
+            "ball_contested_share": contested_samples / samples if samples else 0.0}
 
 
 def add_sample(h: list, r, counts: bool, edge_x: float, edge_y: float) -> str | None:

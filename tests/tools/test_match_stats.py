@@ -1,4 +1,5 @@
-"""The match statistics' stuck detector: spinning on the spot or pressed against a wall."""
+"""The match statistics: the stuck detector (spinning on the spot or pressed against a wall), the
+ball moving, and the ball held between both teams."""
 import math
 import sys
 from pathlib import Path
@@ -57,3 +58,41 @@ def test_a_missing_or_foreign_log_is_one_line_and_a_failure(tmp_path, capsys):
         assert match_stats.main([str(log)]) == 1
         err = capsys.readouterr().err
         assert err.count("\n") == 1 and err.startswith(f"match_stats: {log}: ") and reason in err, err
+
+
+def write_log(path, ball_at, robots, seconds=3.0):
+    """An LCM log of a match in PLAYING: TL_MATCH, TL_GAME, then `seconds` of TL_TRUTH at 30 Hz
+    with the ball still at `ball_at` and `robots` [(team, player, x, y)] standing."""
+    import lcm
+    from touchline import game_state_t, match_config_t, pose2d_t, robot_truth_t, world_truth_t
+    log = lcm.EventLog(str(path), "w", overwrite=True)
+    match = match_config_t()
+    match.field_length_mm, match.field_width_mm, match.border_mm = 6000, 4000, 700
+    log.write_event(0, "TL_MATCH", match.encode())
+    game = game_state_t()
+    game.state = game_state_t.PLAYING
+    log.write_event(0, "TL_GAME", game.encode())
+    for frame in range(int(seconds * 30)):
+        truth = world_truth_t()
+        truth.utime = frame * 33333
+        truth.ball_x_mm, truth.ball_y_mm = ball_at
+        for team, player, x, y in robots:
+            r = robot_truth_t()
+            r.team, r.player, r.active = team, player, True
+            r.body, r.left_foot, r.right_foot = pose2d_t(), pose2d_t(), pose2d_t()
+            r.body.x_mm, r.body.y_mm = x, y
+            truth.robots.append(r)
+        truth.num_robots = len(truth.robots)
+        log.write_event(truth.utime, "TL_TRUTH", truth.encode())
+    log.close()
+
+
+def test_a_ball_held_between_both_teams_is_contested_and_one_team_alone_is_not(tmp_path):
+    toe_to_toe = [(0, 2, -200.0, 0.0), (1, 2, 200.0, 0.0)]
+    write_log(tmp_path / "held.lcmlog", (0.0, 0.0), toe_to_toe)
+    held = match_stats.analyse_log(tmp_path / "held.lcmlog")
+    # Still from the first second on (a ball seen for less than a second is not moving).
+    assert held["playing_share"] == 1.0 and held["ball_moving_share"] == 0.0
+    assert held["ball_contested_share"] == 1.0
+    write_log(tmp_path / "lined_up.lcmlog", (0.0, 0.0), [(0, 2, -200.0, 0.0), (1, 2, 1000.0, 0.0)])
+    assert match_stats.analyse_log(tmp_path / "lined_up.lcmlog")["ball_contested_share"] == 0.0
