@@ -247,6 +247,16 @@ def keepOnField(pos, forward, left):
     return vx * cosT + vy * sinT, -vx * sinT + vy * cosT
 
 
+
+def keepClear(blackboard, forward, left):
+    """(forward, left) off the touched sectors, out of the own goal box (all but the goalie)
+    and on the field: the last word on every walk Avoid makes."""
+    forward, left = keepOffTouches(blackboard.motion, forward, left)
+    pos = blackboard.localisation.robotPos
+    if blackboard.gameController.playerNumber != GOALIE_PLAYER:
+        forward, left = keepOutOfOwnBox(pos, forward, left)
+    return keepOnField(pos, forward, left)
+
 def blocker(found, forward, left):
     """(x, y) of the nearest obstacle within BLOCKED_OBSTACLE_DIST that the walk heads towards, or None."""
     best = None
@@ -285,10 +295,7 @@ class Avoid:
                 forward, left = steer(body.forward, body.left, found, targetDist)
         if backing:
             forward, left = steer(BACK_OFF_FORWARD, self.backOffLeft, found, AVOID_LOOKAHEAD)
-        forward, left = keepOffTouches(blackboard.motion, forward, left)
-        if blackboard.gameController.playerNumber != GOALIE_PLAYER:
-            forward, left = keepOutOfOwnBox(blackboard.localisation.robotPos, forward, left)
-        forward, left = keepOnField(blackboard.localisation.robotPos, forward, left)
+        forward, left = keepClear(blackboard, forward, left)
         return actioncommand.walk(forward, left, 0.0 if backing else body.turn)
 
     def stand(self, blackboard):
@@ -306,10 +313,7 @@ class Avoid:
             return actioncommand.stand()
         dist, x, y = nearest
         forward, left = steer(-YIELD_SPEED * x / dist, -YIELD_SPEED * y / dist, found, YIELD_DIST)
-        forward, left = keepOffTouches(blackboard.motion, forward, left)
-        if blackboard.gameController.playerNumber != GOALIE_PLAYER:
-            forward, left = keepOutOfOwnBox(blackboard.localisation.robotPos, forward, left)
-        forward, left = keepOnField(blackboard.localisation.robotPos, forward, left)
+        forward, left = keepClear(blackboard, forward, left)
         return actioncommand.walk(forward, left)
 
     def blocked(self, found, forward, left, targetDist):

@@ -175,6 +175,13 @@ WalkVelocity keepOnField(const AbsCoord& pos, float forward, float left) {
   return {vx * cosT + vy * sinT, -vx * sinT + vy * cosT};
 }
 
+WalkVelocity keepClear(const Blackboard& blackboard, float forward, float left) {
+  WalkVelocity v = keepOffTouches(blackboard.motion, forward, left);
+  const AbsCoord& pos = blackboard.localisation.robotPos;
+  if (blackboard.gameController.playerNumber != GOALIE_PLAYER) v = keepOutOfOwnBox(pos, v.forward, v.left);
+  return keepOnField(pos, v.forward, v.left);
+}
+
 std::optional<Obstacle> blocker(const std::vector<Obstacle>& found, float forward, float left) {
   std::optional<Obstacle> best;
   float bestDist = 0;
@@ -207,10 +214,7 @@ ActionCommand::Body Avoid::tick(const Blackboard& blackboard, const ActionComman
     if (!backing) v = steer(body.forward, body.left, found, targetDist);
   }
   if (backing) v = steer(BACK_OFF_FORWARD, backOffLeft_, found, AVOID_LOOKAHEAD);
-  v = keepOffTouches(blackboard.motion, v.forward, v.left);
-  if (blackboard.gameController.playerNumber != GOALIE_PLAYER)
-    v = keepOutOfOwnBox(blackboard.localisation.robotPos, v.forward, v.left);
-  v = keepOnField(blackboard.localisation.robotPos, v.forward, v.left);
+  v = keepClear(blackboard, v.forward, v.left);
   return actioncommand::walk(v.forward, v.left, backing ? 0.f : body.turn);
 }
 
@@ -234,10 +238,7 @@ ActionCommand::Body Avoid::stand(const Blackboard& blackboard) {
   }
   if (!any) return actioncommand::stand();
   WalkVelocity v = steer(-YIELD_SPEED * nearestX / nearestDist, -YIELD_SPEED * nearestY / nearestDist, found, YIELD_DIST);
-  v = keepOffTouches(blackboard.motion, v.forward, v.left);
-  if (blackboard.gameController.playerNumber != GOALIE_PLAYER)
-    v = keepOutOfOwnBox(blackboard.localisation.robotPos, v.forward, v.left);
-  v = keepOnField(blackboard.localisation.robotPos, v.forward, v.left);
+  v = keepClear(blackboard, v.forward, v.left);
   return actioncommand::walk(v.forward, v.left);
 }
 

@@ -121,6 +121,9 @@ WalkVelocity keepOutOfOwnBox(const api::AbsCoord& pos, float forward, float left
 /// (forward, left) less its part further out over a line when within FIELD_LOOKAHEAD along it
 /// the body centre would be more than FIELD_EDGE_SLACK beyond that line.
 WalkVelocity keepOnField(const api::AbsCoord& pos, float forward, float left);
+/// (forward, left) off the touched sectors, out of the own goal box (all but the goalie) and
+/// on the field: the last word on every walk Avoid makes.
+WalkVelocity keepClear(const api::Blackboard& blackboard, float forward, float left);
 /// The nearest obstacle within BLOCKED_OBSTACLE_DIST that the walk heads towards, if any.
 std::optional<Obstacle> blocker(const std::vector<Obstacle>& found, float forward, float left);
 

@@ -24,9 +24,9 @@ struct InProcessExtras {
 /// Writes the summary of `match`, run as `s` with `seed`, to `path`, with s.events as
 /// "match_events" (each as the world node publishes it on TL_EVENT: utime, kind, team,
 /// player, text); with `extras` also "world_wall_s" and "physics_rtf" (simulated seconds
-/// per wall second of the world alone: the fastest the match could run with free robots), "cpu_s" and
-/// "cpu_rtf" (simulated seconds per CPU second: the rtf on a core of its own). Throws
-/// std::runtime_error if the file cannot be written.
+/// per wall second of the world alone: the fastest the match could run with free robots),
+/// "cpu_s" and "cpu_rtf" (simulated seconds per CPU second: the rtf on a core of its own).
+/// Throws std::runtime_error if the file cannot be written.
 void write_summary_json(const std::string& path, const sim::Match& match, const transport::RunSummary& s,
                         uint64_t seed, const std::optional<InProcessExtras>& extras = std::nullopt);
 
