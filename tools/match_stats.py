@@ -4,9 +4,10 @@ TL_TRUTH (where every robot and the ball are); writes nothing.
 
   possession: at each sample, the nearest robot within POSSESSION_MM of the ball (playing,
               not penalised, not fallen) has it; its team counts the sample.
-  stuck:      a robot that in the last 10 s of play moved less than STUCK_MOVE_MM net while
-              turning more than a full turn (spinning), or stayed near the carpet's edge
-              (pressed against the boundary), is stuck for that sample.
+  stuck:      a robot that in the last 10 s of play stayed within STUCK_MOVE_MM of where
+              it was at their start while turning more than a full turn (spinning), or
+              while near the carpet's edge (pressed against the boundary), is stuck for
+              that sample. A robot that walked away and back is not: it was not on the spot.
   ball moving: a sample in PLAYING whose ball is at least BALL_MOVING_MM from where it was
               a second before; its share of all samples of the match (set-up states, half
               time and stoppages count as not moving) is "ball_moving_share".
@@ -25,7 +26,7 @@ from pathlib import Path
 SAMPLE_EVERY = 3                   # truth frames: 10 Hz is plenty for these statistics
 SAMPLES_PER_S = 30 // SAMPLE_EVERY
 STUCK_WINDOW = 10 * SAMPLES_PER_S  # samples
-STUCK_MOVE_MM = 150                # net movement under this over the window...
+STUCK_MOVE_MM = 150                # staying this near the window's first position...
 SPIN_RAD = 2 * math.pi             # ...while turning more than a full turn: spinning
 WALL_MARGIN_MM = 250               # ...or within this of the carpet's edge: against a wall
 POSSESSION_MM = 300                # the nearest robot this close to the ball has it
@@ -116,8 +117,9 @@ def stuck_kind(h: list, edge_x: float, edge_y: float) -> str | None:
     """How the robot whose samples end `h` is stuck over the last STUCK_WINDOW samples:
     "spin", "wall", or None when it is not."""
     window = h[-STUCK_WINDOW:]
-    moved = math.hypot(window[-1][0] - window[0][0], window[-1][1] - window[0][1])
-    if moved >= STUCK_MOVE_MM:
+    x0, y0 = window[0][:2]
+    strayed = max(math.hypot(x - x0, y - y0) for x, y, *_ in window)
+    if strayed >= STUCK_MOVE_MM:
         return None
     turned = sum(abs(math.remainder(b[2] - a[2], 2 * math.pi)) for a, b in zip(window, window[1:]))
     if turned > SPIN_RAD:

@@ -4,15 +4,18 @@ turn, a target or ball that flips side as localisation jumps, roles swapping bet
 targets, a walk that cannot get past a crowd. Reads motion.odometry (what the walk did, free
 of localisation's jumps), localisation, gameController and receiver; writes nothing.
 
-  stuck:    over the last UNSTICK_WINDOW_FRAMES ticks (fewer since play resumed or the last
-            recovery: a fast spin is caught early) the odometry turned more than
-            UNSTICK_TURN_RAD in all while the net move, by odometry or by localisation (the
-            smaller: a walk against a robot steps on in odometry only), stayed under
-            UNSTICK_MOVE_MM.
-  recovery: UNSTICK_RECOVER_FRAMES ticks of walking without turning (forward and sideways)
-            towards the ball (the own if seen recently, else the team ball) or, without
-            either, the field's centre; the goalie towards its home. Through Avoid. Then the
-            window starts afresh.
+  stuck:    since some tick within the last UNSTICK_WINDOW_FRAMES (fewer since play
+            resumed), the odometry turned more than UNSTICK_TURN_RAD in all while the net
+            move, by odometry or by localisation (the smaller: a walk against a robot steps
+            on in odometry only), stayed under UNSTICK_MOVE_MM. Every such stretch counts,
+            the shortest too: a fast spin is caught early, and a walk before the turning
+            does not hide it (a walk, then 7 s of search turns one way and the other).
+  recovery: while stuck, walking without turning (forward and sideways) towards the ball
+            (the own if seen recently, else the team ball) or, without either, the field's
+            centre; the goalie towards its home. Through Avoid. At least
+            UNSTICK_RECOVER_FRAMES ticks, then as long as the window still holds the
+            turning without the move: a blocked recovery goes on until the turning is
+            older than the window, so no window of play holds more than the limit.
 """
 import math
 
@@ -25,10 +28,10 @@ from .go_to_pose import WALK_GAIN
 from .robot_limits import clampWalk
 from .search import teamBall
 
-UNSTICK_WINDOW_FRAMES = 240     # frames (8 s) of odometry looked back over ...
-UNSTICK_TURN_RAD = 3.5          # rad: ... turning more than this in all (never: < 4.4 rad in 10 s) ...
-UNSTICK_MOVE_MM = 200.0         # mm: ... while moving less than this net: stuck
-UNSTICK_RECOVER_FRAMES = 60     # frames (2 s) of walking without turning
+UNSTICK_WINDOW_FRAMES = 300     # frames (10 s, the match statistics' window) of odometry looked back over ...
+UNSTICK_TURN_RAD = 3.5          # rad: ... turning more than this in all (they count a full turn as stuck) ...
+UNSTICK_MOVE_MM = 300.0         # mm: ... while moving less than this net: stuck
+UNSTICK_RECOVER_FRAMES = 60     # frames (2 s): the shortest walk without turning
 
 
 class Unstick:
@@ -60,18 +63,21 @@ class Unstick:
         if self.recovering == 0:
             return body
         self.recovering -= 1
-        if self.recovering == 0:
-            self.odometry = []
-            self.turned = []
         x, y = self.walkTarget(blackboard, target)
         toTarget = robot.toRobotRelative(blackboard.localisation.robotPos, x, y)
         forward, left = clampWalk(WALK_GAIN * toTarget.x(), WALK_GAIN * toTarget.y())
         return self.avoid.tick(blackboard, actioncommand.walk(forward, left, 0.0), toTarget.distance)
 
     def stuck(self):
-        (x0, y0, _, u0, v0), (x1, y1, _, u1, v1) = self.odometry[0], self.odometry[-1]
-        moved = min(math.hypot(x1 - x0, y1 - y0), math.hypot(u1 - u0, v1 - v0))
-        return sum(self.turned) > UNSTICK_TURN_RAD and moved < UNSTICK_MOVE_MM
+        (x1, y1, _, u1, v1) = self.odometry[-1]
+        turned = 0.0
+        for start in range(len(self.turned) - 1, -1, -1):  # back from the newest turn
+            turned += self.turned[start]
+            x0, y0, _, u0, v0 = self.odometry[start]
+            moved = min(math.hypot(x1 - x0, y1 - y0), math.hypot(u1 - u0, v1 - v0))
+            if turned > UNSTICK_TURN_RAD and moved < UNSTICK_MOVE_MM:
+                return True
+        return False
 
     @staticmethod
     def walkTarget(blackboard, target):

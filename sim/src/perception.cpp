@@ -143,6 +143,8 @@ Touch Perception::touch(const Viewer& me, const std::vector<Viewer>& robots) con
   Touch touch;
   for (const Viewer& other : robots)
     if (other.id != me.id) touch_update(def_.touch, me.body, other.body.x_mm, other.body.y_mm, touch);
+  for (const Landmark& mark : landmarks_)
+    if (mark.kind == ObjectKind::kGoalPost) touch_post_update(def_.touch, me.body, mark.x_mm, mark.y_mm, touch);
   return touch;
 }
 

@@ -31,6 +31,7 @@ void bind(IniSchema& s, PerceptionDef& d) {
       .bind("sonar.noise_sd_mm", &d.sonar_noise_sd_mm, "reading noise sigma, mm")
       .bind("sonar.sees_goal_posts", &d.sonar_sees_goal_posts, "goal posts echo too, true/false")
       .bind("touch.distance_mm", &d.touch.distance_mm, "another robot's centre this near touches, mm (0: none)")
+      .bind("touch.post_distance_mm", &d.touch.post_distance_mm, "a goal post's centre this near touches, mm (0: none)")
       .bind("inertial.gyro_turn_sd_rad", &d.gyro_turn_sd_rad, "gyro noise on a frame's yaw change, rad");
 }
 
@@ -60,6 +61,7 @@ void validate(const PerceptionDef& d) {
   require_positive("sonar.half_width_mm", d.sonar.half_width_mm);
   require_non_negative("sonar.noise_sd_mm", d.sonar_noise_sd_mm);
   require_non_negative("touch.distance_mm", d.touch.distance_mm);
+  require_non_negative("touch.post_distance_mm", d.touch.post_distance_mm);
   require_range("inertial.gyro_turn_sd_rad", d.gyro_turn_sd_rad, 0.f, 1.f);
 }
 

@@ -9,7 +9,7 @@ from boards import board, message
 from skills.robot_limits import MAX_BACKWARD, MAX_FORWARD
 from skills.team import Team
 from skills.team_comm import ROLE_DEFENDER, ROLE_STRIKER, TeamInfo, encodeMessage
-from skills.unstick import UNSTICK_RECOVER_FRAMES, UNSTICK_TURN_RAD, UNSTICK_WINDOW_FRAMES, Unstick
+from skills.unstick import UNSTICK_MOVE_MM, UNSTICK_RECOVER_FRAMES, UNSTICK_TURN_RAD, UNSTICK_WINDOW_FRAMES, Unstick
 
 WALK = robot.ActionType.WALK
 FRAME_US = 33333
@@ -35,27 +35,60 @@ def run(unstick, frames, target=None, **kwargs):
     return [unstick.tick(spinBoard(frame, **kwargs), turning(), target) for frame in range(frames)]
 
 
-def test_turning_on_the_spot_for_the_window_becomes_a_walk_to_the_ball_without_turning():
-    bodies = run(Unstick(), STUCK_FRAME + UNSTICK_RECOVER_FRAMES + 1)  # 1.8 rad/s
+def runPath(unstick, path):
+    """The bodies Unstick returns for turning() requests at the field origin (frame 0) and
+    then along `path`, a (mm stepped forward, rad turned) pair per frame: odometry and
+    localisation see the steps along field x (the test's odometry steps along its own x)."""
+    bodies, x, theta = [], 0.0, 0.0
+    for frame, (step, turn) in enumerate([(0.0, 0.0), *path]):
+        x, theta = x + step, theta + turn
+        blackboard = board((x, 0.0, 0.0), utime=frame * FRAME_US, odometry=(x, 0.0, theta))
+        bodies.append(unstick.tick(blackboard, turning(), None))
+    return bodies
+
+
+def isRecovery(body):
+    """The recovery walk with the ball 1000 mm ahead: straight at it, at full speed."""
+    return (body.actionType, body.forward, body.left, body.turn) == (WALK, pytest.approx(MAX_FORWARD),
+                                                                     pytest.approx(0.0), 0.0)
+
+
+SPIN = [(0.0, 0.06)] * STUCK_FRAME  # 1.8 rad/s on the spot: over UNSTICK_TURN_RAD on its last tick
+
+
+def test_turning_on_the_spot_becomes_a_walk_to_the_ball_without_turning_until_it_has_moved():
+    walk = [(6.0, 0.0)] * (UNSTICK_RECOVER_FRAMES - 1)  # 354 mm
+    bodies = runPath(Unstick(), [*SPIN, *walk, (0.0, 0.0)])
     assert all(b.turn == pytest.approx(1.5) for b in bodies[:STUCK_FRAME])
-    recovery = bodies[STUCK_FRAME:STUCK_FRAME + UNSTICK_RECOVER_FRAMES]
-    for b in recovery:  # the ball 1000 mm ahead: straight at it, at full speed
-        assert (b.actionType, b.forward, b.left, b.turn) == (WALK, pytest.approx(MAX_FORWARD), pytest.approx(0.0), 0.0)
-    assert bodies[-1].turn == pytest.approx(1.5)  # recovered: the request again, the window afresh
+    assert all(isRecovery(b) for b in bodies[STUCK_FRAME:STUCK_FRAME + UNSTICK_RECOVER_FRAMES])
+    assert bodies[-1].turn == pytest.approx(1.5)  # moved away from the turning: the request again
+
+
+def test_a_blocked_recovery_goes_on_until_the_turning_has_left_the_window():
+    bodies = runPath(Unstick(), [*SPIN, *[(0.0, 0.0)] * (UNSTICK_WINDOW_FRAMES + UNSTICK_RECOVER_FRAMES)])
+    assert all(isRecovery(b) for b in bodies[STUCK_FRAME:UNSTICK_WINDOW_FRAMES])
+    assert bodies[-1].turn == pytest.approx(1.5)
+
+
+def test_a_walk_before_the_turning_does_not_hide_it():
+    bodies = runPath(Unstick(), [*[(6.0, 0.0)] * 100, *SPIN])  # 600 mm, then the spin
+    assert bodies[-2].turn == pytest.approx(1.5) and isRecovery(bodies[-1])
 
 
 def test_the_window_and_limit_the_cases_rely_on():
     assert 0.06 * (STUCK_FRAME - 1) < UNSTICK_TURN_RAD < 0.06 * STUCK_FRAME
-    assert 0.012 * (UNSTICK_WINDOW_FRAMES - 1) < UNSTICK_TURN_RAD
+    assert 0.011 * (UNSTICK_WINDOW_FRAMES - 1) < UNSTICK_TURN_RAD
+    assert 100 + STUCK_FRAME < UNSTICK_WINDOW_FRAMES  # the walk before the spin is in the window
+    assert 6.0 * (UNSTICK_RECOVER_FRAMES - 1) > UNSTICK_MOVE_MM
 
 
 def test_walking_or_turning_slowly_is_not_stuck():
-    assert all(b.turn == pytest.approx(1.5) for b in run(Unstick(), 400, stepPerFrame=4.0))  # 236 mm in 59 frames
-    assert all(b.turn == pytest.approx(1.5) for b in run(Unstick(), 400, turnPerFrame=0.012))  # 2.9 rad in 8 s
+    assert all(b.turn == pytest.approx(1.5) for b in run(Unstick(), 400, stepPerFrame=6.0))  # 354 mm in 59 frames
+    assert all(b.turn == pytest.approx(1.5) for b in run(Unstick(), 400, turnPerFrame=0.011))  # 3.3 rad in 10 s
 
 
 def test_a_walk_that_steps_on_in_odometry_only_is_stuck():
-    bodies = run(Unstick(), STUCK_FRAME + 1, stepPerFrame=4.0, localised=False)
+    bodies = run(Unstick(), STUCK_FRAME + 1, stepPerFrame=6.0, localised=False)
     assert bodies[STUCK_FRAME - 1].turn == pytest.approx(1.5) and bodies[STUCK_FRAME].turn == 0.0
 
 

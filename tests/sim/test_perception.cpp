@@ -277,6 +277,22 @@ TEST(Perception, TouchIsFeltFromEveryOtherRobotWithinReachButNotFromItself) {
   EXPECT_FALSE(perception.touch(me, {me}).any());
 }
 
+TEST(Perception, AGoalPostWithinReachIsFeltLikeARobot) {
+  const Pose2D post = kField.goal_post(0, true); // team 0's goal at -x
+  // 150 mm in front of the post facing it (+x of the robot towards -x of the field): the
+  // foot bumpers; 250 mm beside it: out of a post's reach, though a robot there would touch.
+  const Viewer facing = viewer(0, 1, post.x_mm + 150, post.y_mm, kPi);
+  const Viewer beside = viewer(0, 2, post.x_mm, post.y_mm + 250, 0);
+  Perception perception(kField, exact(), 1);
+  const Touch t = perception.touch(facing, {facing});
+  EXPECT_TRUE(t.front_left || t.front_right);
+  EXPECT_FALSE(t.left || t.right || t.back);
+  EXPECT_FALSE(perception.touch(beside, {beside}).any());
+  PerceptionDef numb_def = exact();
+  numb_def.touch.post_distance_mm = 0;
+  EXPECT_FALSE(Perception(kField, numb_def, 1).touch(facing, {facing}).any()) << "post_distance_mm 0: no post is felt";
+}
+
 TEST(Perception, PerceiveIsObserveAndSonarPerRobotInOrder) {
   const std::vector<Viewer> robots{viewer(0, 1, -500, 0, 0), viewer(1, 1, 500, 50, kPi), viewer(0, 2, 0, 800, -1)};
   const BallTruth ball = ball_at(0, 0);

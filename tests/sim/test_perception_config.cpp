@@ -42,6 +42,8 @@ TEST(PerceptionConfig, ShippedFilesHoldTheCodeDefaults) {
     EXPECT_EQ(f.sonar.half_width_mm, d.sonar.half_width_mm);
     EXPECT_EQ(f.sonar_noise_sd_mm, d.sonar_noise_sd_mm);
     EXPECT_EQ(f.sonar_sees_goal_posts, d.sonar_sees_goal_posts);
+    EXPECT_EQ(f.touch.distance_mm, d.touch.distance_mm);
+    EXPECT_EQ(f.touch.post_distance_mm, d.touch.post_distance_mm);
     EXPECT_NO_THROW(validate(f));
   }
 }

@@ -53,3 +53,15 @@ TEST(Touch, WorksInTheRobotFrameAndGathersEveryToucher) {
   EXPECT_TRUE(t.back);
   EXPECT_EQ(sectors(t), 2);
 }
+
+TEST(Touch, AGoalPostIsFeltWithinItsOwnReach) {
+  Touch t;
+  sim::touch_post_update({}, {0, 0, 0}, 0, 190, t); // a post 190 mm to the left: within the 200 mm default
+  EXPECT_TRUE(t.left);
+  EXPECT_EQ(sectors(t), 1);
+  Touch far;
+  sim::touch_post_update({}, {0, 0, 0}, 250, 0, far); // where a robot would touch, a post does not
+  EXPECT_FALSE(far.any());
+  sim::touch_update({}, {0, 0, 0}, 250, 0, far);
+  EXPECT_TRUE(far.front_left);
+}

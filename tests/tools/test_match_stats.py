@@ -28,6 +28,13 @@ def test_standing_in_the_field_or_walking_is_not():
     assert match_stats.stuck_kind(samples(0, 0, theta_step=0.05), EDGE_X, EDGE_Y) is None  # 5 rad: less than a full turn
 
 
+def test_turning_on_a_walk_away_and_back_is_not_spinning_on_the_spot():
+    half = match_stats.STUCK_WINDOW // 2
+    away_and_back = [(min(i, 2 * half - i) * 10.0, 0.0, i * 0.1, True) for i in range(match_stats.STUCK_WINDOW)]
+    assert away_and_back[half][0] == 500.0 and away_and_back[-1][0] < match_stats.STUCK_MOVE_MM
+    assert match_stats.stuck_kind(away_and_back, EDGE_X, EDGE_Y) is None  # 10 rad, back where it began
+
+
 def test_the_episode_listing_names_how_a_robot_is_stuck():
     assert match_stats.stuck_kind(samples(0, 0, theta_step=0.1), EDGE_X, EDGE_Y) == "spin"
     assert match_stats.stuck_kind(samples(3600, 0), EDGE_X, EDGE_Y) == "wall"

@@ -33,11 +33,7 @@ ActionCommand::Body Unstick::tick(const Blackboard& blackboard, const ActionComm
   }
   if (recovering_ == 0 && stuck()) recovering_ = UNSTICK_RECOVER_FRAMES;
   if (recovering_ == 0) return body;
-  if (--recovering_ == 0) {
-    odometry_.clear();
-    positions_.clear();
-    turned_.clear();
-  }
+  --recovering_;
   const FieldPoint walkTo = walkTarget(blackboard, target);
   const RRCoord toTarget = toRobotRelative(blackboard.localisation.robotPos, walkTo.x, walkTo.y);
   const WalkVelocity v = clampWalk(WALK_GAIN * toTarget.x(), WALK_GAIN * toTarget.y());
@@ -45,15 +41,18 @@ ActionCommand::Body Unstick::tick(const Blackboard& blackboard, const ActionComm
 }
 
 bool Unstick::stuck() const {
-  float turned = 0.f;
-  for (const float t : turned_) turned += t;
-  const AbsCoord& first = odometry_.front();
   const AbsCoord& last = odometry_.back();
-  // The smaller of the two: a walk against a robot steps on in odometry only.
-  const float moved = std::min(std::hypot(last.x - first.x, last.y - first.y),
-                               std::hypot(positions_.back().x - positions_.front().x,
-                                          positions_.back().y - positions_.front().y));
-  return turned > UNSTICK_TURN_RAD && moved < UNSTICK_MOVE_MM;
+  float turned = 0.f;
+  for (size_t start = turned_.size(); start-- > 0;) { // back from the newest turn
+    turned += turned_[start];
+    const AbsCoord& first = odometry_[start];
+    // The smaller of the two: a walk against a robot steps on in odometry only.
+    const float moved = std::min(std::hypot(last.x - first.x, last.y - first.y),
+                                 std::hypot(positions_.back().x - positions_[start].x,
+                                            positions_.back().y - positions_[start].y));
+    if (turned > UNSTICK_TURN_RAD && moved < UNSTICK_MOVE_MM) return true;
+  }
+  return false;
 }
 
 FieldPoint Unstick::walkTarget(const Blackboard& blackboard, std::optional<FieldPoint> target) {

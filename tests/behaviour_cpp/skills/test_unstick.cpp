@@ -63,39 +63,102 @@ std::vector<ActionCommand::Body> run(Unstick& unstick, int frames, const Spin& s
   return bodies;
 }
 
+/// A frame's motion along a path: mm stepped forward, rad turned.
+struct Step {
+  float forward_mm = 0.f;
+  float turn_rad = 0.f;
+};
+
+/// `frames` copies of `step`, appended to `path`.
+std::vector<Step>& repeat(std::vector<Step>& path, const Step& step, int frames) {
+  path.insert(path.end(), static_cast<size_t>(frames), step);
+  return path;
+}
+
+/// The bodies Unstick returns for turning requests (1.5 rad/s) at the field origin (frame 0)
+/// and then along `path`, a Step per frame: odometry and localisation see the steps along
+/// field x (the test's odometry steps along its own x); the ball 1000 mm ahead of the origin.
+std::vector<ActionCommand::Body> runPath(Unstick& unstick, const std::vector<Step>& path) {
+  const ActionCommand::Body turning = touchline::behaviour::actioncommand::walk(0.f, 0.f, 1.5f);
+  std::vector<ActionCommand::Body> bodies;
+  float x = 0.f, theta = 0.f;
+  for (size_t frame = 0; frame <= path.size(); ++frame) {
+    if (frame > 0) {
+      x += path[frame - 1].forward_mm;
+      theta += path[frame - 1].turn_rad;
+    }
+    Blackboard board = teamBoard({x, 0.f, 0.f}, 1000.f, 0.f, true, 0, GameState::PLAYING, 2, false, false, {},
+                                 static_cast<int64_t>(frame) * FRAME_US);
+    board.motion.odometry = {x, 0.f, theta};
+    bodies.push_back(unstick.tick(board, turning, std::nullopt));
+  }
+  return bodies;
+}
+
+/// The recovery walk with the ball 1000 mm ahead: straight at it, at full speed.
+void expectRecovery(const ActionCommand::Body& body, int i) {
+  EXPECT_EQ(body.actionType, AT::WALK) << i;
+  EXPECT_NEAR(body.forward, MAX_FORWARD, 1e-3f) << i;
+  EXPECT_NEAR(body.left, 0.f, 1e-3f) << i;
+  EXPECT_EQ(body.turn, 0.f) << i;
+}
+
+constexpr Step SPIN{0.f, 0.06f}; ///< 1.8 rad/s on the spot: STUCK_FRAME of them turn over UNSTICK_TURN_RAD
+
 } // namespace
 
-TEST(Unstick, TurningOnTheSpotForTheWindowBecomesAWalkToTheBallWithoutTurning) {
+TEST(Unstick, TurningOnTheSpotBecomesAWalkToTheBallWithoutTurningUntilItHasMoved) {
   Unstick unstick;
-  const auto bodies = run(unstick, STUCK_FRAME + UNSTICK_RECOVER_FRAMES + 1, Spin{});
+  std::vector<Step> path;
+  repeat(path, SPIN, STUCK_FRAME);
+  repeat(path, {6.f, 0.f}, UNSTICK_RECOVER_FRAMES - 1); // 354 mm
+  repeat(path, {}, 1);
+  const auto bodies = runPath(unstick, path);
   for (int i = 0; i < STUCK_FRAME; ++i) EXPECT_FLOAT_EQ(bodies[i].turn, 1.5f) << i;
-  for (int i = STUCK_FRAME; i < STUCK_FRAME + UNSTICK_RECOVER_FRAMES; ++i) {
-    EXPECT_EQ(bodies[i].actionType, AT::WALK) << i; // the ball 1000 mm ahead: straight at it, at full speed
-    EXPECT_NEAR(bodies[i].forward, MAX_FORWARD, 1e-3f) << i;
-    EXPECT_NEAR(bodies[i].left, 0.f, 1e-3f) << i;
-    EXPECT_EQ(bodies[i].turn, 0.f) << i;
-  }
-  EXPECT_FLOAT_EQ(bodies.back().turn, 1.5f); // recovered: the request again, the window afresh
+  for (int i = STUCK_FRAME; i < STUCK_FRAME + UNSTICK_RECOVER_FRAMES; ++i) expectRecovery(bodies[i], i);
+  EXPECT_FLOAT_EQ(bodies.back().turn, 1.5f); // moved away from the turning: the request again
+}
+
+TEST(Unstick, ABlockedRecoveryGoesOnUntilTheTurningHasLeftTheWindow) {
+  Unstick unstick;
+  std::vector<Step> path;
+  repeat(path, SPIN, STUCK_FRAME);
+  repeat(path, {}, UNSTICK_WINDOW_FRAMES + UNSTICK_RECOVER_FRAMES);
+  const auto bodies = runPath(unstick, path);
+  for (int i = STUCK_FRAME; i < UNSTICK_WINDOW_FRAMES; ++i) expectRecovery(bodies[i], i);
+  EXPECT_FLOAT_EQ(bodies.back().turn, 1.5f);
+}
+
+TEST(Unstick, AWalkBeforeTheTurningDoesNotHideIt) {
+  Unstick unstick;
+  std::vector<Step> path;
+  repeat(path, {6.f, 0.f}, 100); // 600 mm, then the spin
+  repeat(path, SPIN, STUCK_FRAME);
+  const auto bodies = runPath(unstick, path);
+  EXPECT_FLOAT_EQ(bodies[bodies.size() - 2].turn, 1.5f);
+  expectRecovery(bodies.back(), static_cast<int>(bodies.size()) - 1);
 }
 
 TEST(Unstick, TheWindowAndLimitTheCasesRelyOn) {
   EXPECT_LT(0.06f * (STUCK_FRAME - 1), UNSTICK_TURN_RAD);
   EXPECT_GT(0.06f * STUCK_FRAME, UNSTICK_TURN_RAD);
-  EXPECT_LT(0.012f * (UNSTICK_WINDOW_FRAMES - 1), UNSTICK_TURN_RAD);
+  EXPECT_LT(0.011f * (UNSTICK_WINDOW_FRAMES - 1), UNSTICK_TURN_RAD);
+  EXPECT_LT(100 + STUCK_FRAME, UNSTICK_WINDOW_FRAMES); // the walk before the spin is in the window
+  EXPECT_GT(6.f * (UNSTICK_RECOVER_FRAMES - 1), UNSTICK_MOVE_MM);
 }
 
 TEST(Unstick, WalkingOrTurningSlowlyIsNotStuck) {
   Unstick walking, slow;
-  for (const auto& b : run(walking, 400, spinWith([](Spin& s) { s.stepPerFrame = 4.f; })))
-    EXPECT_FLOAT_EQ(b.turn, 1.5f); // 236 mm in 59 frames
-  for (const auto& b : run(slow, 400, spinWith([](Spin& s) { s.turnPerFrame = 0.012f; })))
-    EXPECT_FLOAT_EQ(b.turn, 1.5f); // 2.9 rad in 8 s
+  for (const auto& b : run(walking, 400, spinWith([](Spin& s) { s.stepPerFrame = 6.f; })))
+    EXPECT_FLOAT_EQ(b.turn, 1.5f); // 354 mm in 59 frames
+  for (const auto& b : run(slow, 400, spinWith([](Spin& s) { s.turnPerFrame = 0.011f; })))
+    EXPECT_FLOAT_EQ(b.turn, 1.5f); // 3.3 rad in 10 s
 }
 
 TEST(Unstick, AWalkThatStepsOnInOdometryOnlyIsStuck) {
   Unstick unstick;
   const auto bodies = run(unstick, STUCK_FRAME + 1, spinWith([](Spin& s) {
-                            s.stepPerFrame = 4.f;
+                            s.stepPerFrame = 6.f;
                             s.localised = false;
                           }));
   EXPECT_FLOAT_EQ(bodies[STUCK_FRAME - 1].turn, 1.5f);

@@ -11,10 +11,10 @@
 
 namespace touchline::behaviour::skills {
 
-inline constexpr int UNSTICK_WINDOW_FRAMES = 240;   ///< frames (8 s) of odometry looked back over ...
-inline constexpr float UNSTICK_TURN_RAD = 3.5f;     ///< rad: ... turning more than this (never: < 4.4 rad in 10 s) ...
-inline constexpr float UNSTICK_MOVE_MM = 200.f;     ///< mm: ... while moving less than this net: stuck
-inline constexpr int UNSTICK_RECOVER_FRAMES = 60;   ///< frames (2 s) of walking without turning
+inline constexpr int UNSTICK_WINDOW_FRAMES = 300;   ///< frames (10 s, the match statistics' window) looked back over ...
+inline constexpr float UNSTICK_TURN_RAD = 3.5f;     ///< rad: ... turning more than this (they count a full turn as stuck) ...
+inline constexpr float UNSTICK_MOVE_MM = 300.f;     ///< mm: ... while moving less than this net: stuck
+inline constexpr int UNSTICK_RECOVER_FRAMES = 60;   ///< frames (2 s): the shortest walk without turning
 
 class Unstick {
  public:
