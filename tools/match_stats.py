@@ -118,8 +118,9 @@ def stuck_kind(h: list, edge_x: float, edge_y: float) -> str | None:
     "spin", "wall", or None when it is not."""
     window = h[-STUCK_WINDOW:]
     x0, y0 = window[0][:2]
-    strayed = max(math.hypot(x - x0, y - y0) for x, y, *_ in window)
-    if strayed >= STUCK_MOVE_MM:
+    if math.hypot(window[-1][0] - x0, window[-1][1] - y0) >= STUCK_MOVE_MM:
+        return None  # the common case, at once: it ended that far away
+    if max(math.hypot(x - x0, y - y0) for x, y, *_ in window) >= STUCK_MOVE_MM:
         return None
     turned = sum(abs(math.remainder(b[2] - a[2], 2 * math.pi)) for a, b in zip(window, window[1:]))
     if turned > SPIN_RAD:

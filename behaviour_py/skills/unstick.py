@@ -69,13 +69,16 @@ class Unstick:
         return self.avoid.tick(blackboard, actioncommand.walk(forward, left, 0.0), toTarget.distance)
 
     def stuck(self):
+        if sum(self.turned) <= UNSTICK_TURN_RAD - 1e-4:
+            return False  # the common case, at C speed (the loop's sum differs in the last bits only)
         (x1, y1, _, u1, v1) = self.odometry[-1]
         turned = 0.0
         for start in range(len(self.turned) - 1, -1, -1):  # back from the newest turn
             turned += self.turned[start]
+            if turned <= UNSTICK_TURN_RAD:
+                continue
             x0, y0, _, u0, v0 = self.odometry[start]
-            moved = min(math.hypot(x1 - x0, y1 - y0), math.hypot(u1 - u0, v1 - v0))
-            if turned > UNSTICK_TURN_RAD and moved < UNSTICK_MOVE_MM:
+            if min(math.hypot(x1 - x0, y1 - y0), math.hypot(u1 - u0, v1 - v0)) < UNSTICK_MOVE_MM:
                 return True
         return False
 
