@@ -45,12 +45,13 @@ bool Unstick::stuck() const {
   float turned = 0.f;
   for (size_t start = turned_.size(); start-- > 0;) { // back from the newest turn
     turned += turned_[start];
+    if (turned <= UNSTICK_TURN_RAD) continue; // moves count only past the limit
     const AbsCoord& first = odometry_[start];
     // The smaller of the two: a walk against a robot steps on in odometry only.
     const float moved = std::min(std::hypot(last.x - first.x, last.y - first.y),
                                  std::hypot(positions_.back().x - positions_[start].x,
                                             positions_.back().y - positions_[start].y));
-    if (turned > UNSTICK_TURN_RAD && moved < UNSTICK_MOVE_MM) return true;
+    if (moved < UNSTICK_MOVE_MM) return true;
   }
   return false;
 }
