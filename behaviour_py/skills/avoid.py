@@ -203,15 +203,26 @@ def keepOffTouches(motion, forward, left):
     return clampWalk(speed * math.cos(best[0]), speed * math.sin(best[0]))
 
 
+def toFieldAxes(pos, forward, left):
+    """The walk (forward, left) of a robot at pos as (vx, vy) along the field's axes."""
+    cosT = math.cos(pos.theta)
+    sinT = math.sin(pos.theta)
+    return forward * cosT - left * sinT, forward * sinT + left * cosT
+
+
+def toRobotAxes(pos, vx, vy):
+    """(vx, vy) along the field's axes as the walk (forward, left) of a robot at pos."""
+    cosT = math.cos(pos.theta)
+    sinT = math.sin(pos.theta)
+    return vx * cosT + vy * sinT, -vx * sinT + vy * cosT
+
+
 def keepOutOfOwnBox(pos, forward, left):
     """(forward, left) less its part into the own goal box when it would enter it."""
     speed = math.hypot(forward, left)
     if speed < MIN_WALK_SPEED or inOwnBox(pos.x, pos.y):
         return forward, left
-    cosT = math.cos(pos.theta)
-    sinT = math.sin(pos.theta)
-    vx = forward * cosT - left * sinT
-    vy = forward * sinT + left * cosT
+    vx, vy = toFieldAxes(pos, forward, left)
     if not inOwnBox(pos.x + vx / speed * BOX_LOOKAHEAD, pos.y + vy / speed * BOX_LOOKAHEAD):
         return forward, left
     if pos.x >= OWN_BOX_FRONT_X + BOX_AVOID_MARGIN:
@@ -221,7 +232,7 @@ def keepOutOfOwnBox(pos, forward, left):
         kept = max(vy, 0.0) if pos.y > 0.0 else min(vy, 0.0)
         vx += abs(vy - kept)
         vy = kept
-    return vx * cosT + vy * sinT, -vx * sinT + vy * cosT
+    return toRobotAxes(pos, vx, vy)
 
 
 def keepOnField(pos, forward, left):
@@ -230,10 +241,7 @@ def keepOnField(pos, forward, left):
     speed = math.hypot(forward, left)
     if speed < MIN_WALK_SPEED:
         return forward, left
-    cosT = math.cos(pos.theta)
-    sinT = math.sin(pos.theta)
-    vx = forward * cosT - left * sinT
-    vy = forward * sinT + left * cosT
+    vx, vy = toFieldAxes(pos, forward, left)
     aheadX = pos.x + vx / speed * FIELD_LOOKAHEAD
     aheadY = pos.y + vy / speed * FIELD_LOOKAHEAD
     outX = abs(aheadX) > FIELD_HALF_LENGTH + FIELD_EDGE_SLACK and aheadX * vx > 0.0  # further out over a goal line ...
@@ -244,8 +252,7 @@ def keepOnField(pos, forward, left):
         vx = 0.0
     if outY:
         vy = 0.0
-    return vx * cosT + vy * sinT, -vx * sinT + vy * cosT
-
+    return toRobotAxes(pos, vx, vy)
 
 
 def keepClear(blackboard, forward, left):
@@ -256,6 +263,7 @@ def keepClear(blackboard, forward, left):
     if blackboard.gameController.playerNumber != GOALIE_PLAYER:
         forward, left = keepOutOfOwnBox(pos, forward, left)
     return keepOnField(pos, forward, left)
+
 
 def blocker(found, forward, left):
     """(x, y) of the nearest obstacle within BLOCKED_OBSTACLE_DIST that the walk heads towards, or None."""

@@ -18,6 +18,26 @@ namespace {
 /// a touch beside must be neither ahead nor behind in both ports.
 float exactZero(float value) { return std::fabs(value) < 1e-3f ? 0.f : value; }
 
+/// A velocity along the field's axes, mm/s.
+struct FieldVelocity {
+  float vx = 0;
+  float vy = 0;
+};
+
+/// The walk (forward, left) of a robot at pos along the field's axes.
+FieldVelocity toFieldAxes(const AbsCoord& pos, float forward, float left) {
+  const float cosT = std::cos(pos.theta);
+  const float sinT = std::sin(pos.theta);
+  return {forward * cosT - left * sinT, forward * sinT + left * cosT};
+}
+
+/// v along the field's axes as the walk (forward, left) of a robot at pos.
+WalkVelocity toRobotAxes(const AbsCoord& pos, const FieldVelocity& v) {
+  const float cosT = std::cos(pos.theta);
+  const float sinT = std::sin(pos.theta);
+  return {v.vx * cosT + v.vy * sinT, -v.vx * sinT + v.vy * cosT};
+}
+
 } // namespace
 
 std::vector<Sighting> remember(const std::vector<Sighting>& seen, const Blackboard& blackboard) {
@@ -142,37 +162,31 @@ WalkVelocity steer(float forward, float left, const std::vector<Obstacle>& found
 WalkVelocity keepOutOfOwnBox(const AbsCoord& pos, float forward, float left) {
   const float speed = std::hypot(forward, left);
   if (speed < MIN_WALK_SPEED || inOwnBox(pos.x, pos.y)) return {forward, left};
-  const float cosT = std::cos(pos.theta);
-  const float sinT = std::sin(pos.theta);
-  float vx = forward * cosT - left * sinT;
-  float vy = forward * sinT + left * cosT;
-  if (!inOwnBox(pos.x + vx / speed * BOX_LOOKAHEAD, pos.y + vy / speed * BOX_LOOKAHEAD)) return {forward, left};
+  FieldVelocity v = toFieldAxes(pos, forward, left);
+  if (!inOwnBox(pos.x + v.vx / speed * BOX_LOOKAHEAD, pos.y + v.vy / speed * BOX_LOOKAHEAD)) return {forward, left};
   if (pos.x >= OWN_BOX_FRONT_X + BOX_AVOID_MARGIN) {
-    vx = std::max(vx, 0.f); // in front of the box: no nearer the goal line
+    v.vx = std::max(v.vx, 0.f); // in front of the box: no nearer the goal line
   } else {
     // beside it: no nearer the centre line; that part goes to the field, round the front
-    const float kept = pos.y > 0.f ? std::max(vy, 0.f) : std::min(vy, 0.f);
-    vx += std::fabs(vy - kept);
-    vy = kept;
+    const float kept = pos.y > 0.f ? std::max(v.vy, 0.f) : std::min(v.vy, 0.f);
+    v.vx += std::fabs(v.vy - kept);
+    v.vy = kept;
   }
-  return {vx * cosT + vy * sinT, -vx * sinT + vy * cosT};
+  return toRobotAxes(pos, v);
 }
 
 WalkVelocity keepOnField(const AbsCoord& pos, float forward, float left) {
   const float speed = std::hypot(forward, left);
   if (speed < MIN_WALK_SPEED) return {forward, left};
-  const float cosT = std::cos(pos.theta);
-  const float sinT = std::sin(pos.theta);
-  float vx = forward * cosT - left * sinT;
-  float vy = forward * sinT + left * cosT;
-  const float aheadX = pos.x + vx / speed * FIELD_LOOKAHEAD, aheadY = pos.y + vy / speed * FIELD_LOOKAHEAD;
+  FieldVelocity v = toFieldAxes(pos, forward, left);
+  const float aheadX = pos.x + v.vx / speed * FIELD_LOOKAHEAD, aheadY = pos.y + v.vy / speed * FIELD_LOOKAHEAD;
   const float limitX = FIELD_HALF_LENGTH + FIELD_EDGE_SLACK, limitY = FIELD_HALF_WIDTH + FIELD_EDGE_SLACK;
-  const bool outX = std::fabs(aheadX) > limitX && aheadX * vx > 0.f; // further out over a goal line ...
-  const bool outY = std::fabs(aheadY) > limitY && aheadY * vy > 0.f; // ... or a touchline
+  const bool outX = std::fabs(aheadX) > limitX && aheadX * v.vx > 0.f; // further out over a goal line ...
+  const bool outY = std::fabs(aheadY) > limitY && aheadY * v.vy > 0.f; // ... or a touchline
   if (!outX && !outY) return {forward, left};
-  if (outX) vx = 0.f;
-  if (outY) vy = 0.f;
-  return {vx * cosT + vy * sinT, -vx * sinT + vy * cosT};
+  if (outX) v.vx = 0.f;
+  if (outY) v.vy = 0.f;
+  return toRobotAxes(pos, v);
 }
 
 WalkVelocity keepClear(const Blackboard& blackboard, float forward, float left) {
