@@ -20,7 +20,10 @@ Off a touch: a sensor only tells the sector (TOUCH_FRONT_HALF_WIDTH, TOUCH_SIDE_
 either side of its middle), and a robot at its edge is pushed by a walk that passes its
 middle. So a walk that closes on any bearing of a touched sector (less than 90 deg from it)
 turns, its speed kept, to the nearest direction that closes on none; it stops if every
-direction does. This comes after the steering and the backing off, before the own goal box.
+direction does. This comes after the steering and the backing off, before the own goal box
+and the field; a walk that those turn back onto a touched sector stops (a defender beside
+its box, sidestepping towards it with an opponent ahead, was sent round the box's front
+into the opponent: half the Python supporters' pushing fouls).
 
 Around robots (a tangent rule): the nearest obstacle ahead on the walk's line, within
 AVOID_LOOKAHEAD and nearer than the target, and less than AVOID_CLEARANCE off the line,
@@ -174,6 +177,12 @@ def steer(forward, left, found, targetDist):
     return clampWalk(speed * math.cos(angle), speed * math.sin(angle))
 
 
+def closesOnTouch(sectors, direction):
+    """Whether a walk in `direction` (rad, robot frame) closes on a touched sector of
+    `sectors` (touchedSectors()): less than 90 deg from some bearing in it."""
+    return any(abs(robot.normaliseTheta(direction - middle)) < half + math.pi / 2 - 1e-4 for middle, half in sectors)
+
+
 def keepOffTouches(motion, forward, left):
     """(forward, left) turned to the nearest direction that closes on no touched sector, its
     speed kept; (0, 0) when every direction closes on one."""
@@ -182,18 +191,14 @@ def keepOffTouches(motion, forward, left):
     if speed < MIN_WALK_SPEED or not sectors:
         return forward, left
 
-    def closes(direction):  # less than 90 deg from some bearing of a touched sector
-        return any(abs(robot.normaliseTheta(direction - middle)) < half + math.pi / 2 - 1e-4
-                   for middle, half in sectors)
-
     direction = math.atan2(left, forward)
-    if not closes(direction):
+    if not closesOnTouch(sectors, direction):
         return forward, left
     best = None  # (edge, how far it turns the walk): the first of equal turns (within 1e-4 rad) wins
     for middle, half in sectors:
         for side in (-1.0, 1.0):
             edge = middle + side * (half + math.pi / 2)
-            if closes(edge):
+            if closesOnTouch(sectors, edge):
                 continue
             off = abs(robot.normaliseTheta(edge - direction))
             if best is None or off < best[1] - 1e-4:
@@ -257,12 +262,17 @@ def keepOnField(pos, forward, left):
 
 def keepClear(blackboard, forward, left):
     """(forward, left) off the touched sectors, out of the own goal box (all but the goalie)
-    and on the field: the last word on every walk Avoid makes."""
-    forward, left = keepOffTouches(blackboard.motion, forward, left)
+    and on the field: the last word on every walk Avoid makes. A walk that the box or a line
+    turns back onto a touched sector becomes (0, 0): waiting, not pushing."""
+    motion = blackboard.motion
+    forward, left = keepOffTouches(motion, forward, left)
     pos = blackboard.localisation.robotPos
     if blackboard.gameController.playerNumber != GOALIE_PLAYER:
         forward, left = keepOutOfOwnBox(pos, forward, left)
-    return keepOnField(pos, forward, left)
+    forward, left = keepOnField(pos, forward, left)
+    if math.hypot(forward, left) >= MIN_WALK_SPEED and closesOnTouch(touchedSectors(motion), math.atan2(left, forward)):
+        return 0.0, 0.0  # the box or a line turned the walk back into a robot: wait, do not push
+    return forward, left
 
 
 def blocker(found, forward, left):

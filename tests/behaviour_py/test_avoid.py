@@ -189,6 +189,16 @@ def test_the_goalie_and_a_robot_in_the_box_walk_as_asked():
     assert player.forward == pytest.approx(0.0, abs=1e-3)
 
 
+
+def test_a_walk_the_box_turns_back_into_a_touching_robot_stops():
+    # Beside the own box, sidestepping towards it: the box sends the walk round its front,
+    # forward; with an opponent against the left foot bumper, forward is into it: wait instead.
+    beside = (-2700.0, 1400.0, 0.0)
+    free = Avoid().tick(board(beside, player=3, utime=NOW), walk(0.0, -200.0), 2000.0)
+    assert (free.forward, free.left) == pytest.approx((200.0, 0.0), abs=1e-3)
+    touched = Avoid().tick(board(beside, player=3, touch=("FrontLeft",), utime=NOW), walk(0.0, -200.0), 2000.0)
+    assert (touched.forward, touched.left) == (0.0, 0.0)
+
 # The field
 def test_a_walk_over_a_touchline_loses_its_part_out_and_keeps_its_part_along():
     atLine = robot.AbsCoord(0.0, 1950.0, math.pi / 2)  # on the +y touchline's inside, facing out

@@ -97,16 +97,18 @@ std::vector<TouchedSector> touchedSectors(const MotionBlackboard& motion) {
   return touched;
 }
 
+bool closesOnTouch(const std::vector<TouchedSector>& sectors, float direction) {
+  for (const TouchedSector& s : sectors)
+    if (std::fabs(normaliseTheta(direction - s.middle)) < s.halfWidth + kPi / 2 - 1e-4f) return true;
+  return false;
+}
+
 WalkVelocity keepOffTouches(const MotionBlackboard& motion, float forward, float left) {
   const float speed = std::hypot(forward, left);
   const std::vector<TouchedSector> sectors = touchedSectors(motion);
   if (speed < MIN_WALK_SPEED || sectors.empty()) return {forward, left};
   const auto reach = [](const TouchedSector& s) { return s.halfWidth + kPi / 2; }; // the directions closing on it
-  const auto closes = [&](float direction) { // less than 90 deg from some bearing of a touched sector
-    for (const TouchedSector& s : sectors)
-      if (std::fabs(normaliseTheta(direction - s.middle)) < reach(s) - 1e-4f) return true;
-    return false;
-  };
+  const auto closes = [&](float direction) { return closesOnTouch(sectors, direction); };
   const float direction = std::atan2(left, forward);
   if (!closes(direction)) return {forward, left};
   bool any = false; // best: the edge turning the walk least; the first of equal turns (within 1e-4 rad) wins
@@ -193,7 +195,11 @@ WalkVelocity keepClear(const Blackboard& blackboard, float forward, float left) 
   WalkVelocity v = keepOffTouches(blackboard.motion, forward, left);
   const AbsCoord& pos = blackboard.localisation.robotPos;
   if (blackboard.gameController.playerNumber != GOALIE_PLAYER) v = keepOutOfOwnBox(pos, v.forward, v.left);
-  return keepOnField(pos, v.forward, v.left);
+  v = keepOnField(pos, v.forward, v.left);
+  if (std::hypot(v.forward, v.left) >= MIN_WALK_SPEED &&
+      closesOnTouch(touchedSectors(blackboard.motion), std::atan2(v.left, v.forward)))
+    return {0.f, 0.f}; // the box or a line turned the walk back into a robot: wait, do not push
+  return v;
 }
 
 std::optional<Obstacle> blocker(const std::vector<Obstacle>& found, float forward, float left) {

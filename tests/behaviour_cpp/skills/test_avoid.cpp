@@ -249,6 +249,21 @@ TEST(Avoid, TheGoalieAndARobotInTheBoxWalkAsAsked) {
   EXPECT_NEAR(Avoid().tick(sonarBoard(outside, 1.f, 1.f, 3), walk, 2000.f).forward, 0.f, 1e-3f);
 }
 
+TEST(Avoid, AWalkTheBoxTurnsBackIntoATouchingRobotStops) {
+  // Beside the own box, sidestepping towards it: the box sends the walk round its front,
+  // forward; with an opponent against the left foot bumper, forward is into it: wait instead.
+  const AbsCoord beside{-2700.f, 1400.f, 0.f};
+  const ActionCommand::Body sidestep = touchline::behaviour::actioncommand::walk(0.f, -200.f, 0.f);
+  const ActionCommand::Body free = Avoid().tick(sonarBoard(beside, 1.f, 1.f, 3, NOW), sidestep, 2000.f);
+  EXPECT_NEAR(free.forward, 200.f, 1e-3f);
+  EXPECT_NEAR(free.left, 0.f, 1e-3f);
+  Blackboard touched = sonarBoard(beside, 1.f, 1.f, 3, NOW);
+  touched.motion.touchFrontLeft = true;
+  const ActionCommand::Body waiting = Avoid().tick(touched, sidestep, 2000.f);
+  EXPECT_EQ(waiting.forward, 0.f);
+  EXPECT_EQ(waiting.left, 0.f);
+}
+
 // The field
 TEST(Avoid, AWalkOverATouchlineLosesItsPartOutAndKeepsItsPartAlong) {
   const AbsCoord atLine{0.f, 1950.f, kPi / 2}; // on the +y touchline's inside, facing out

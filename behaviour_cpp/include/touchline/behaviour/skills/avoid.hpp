@@ -22,7 +22,10 @@
 // either side of its middle), and a robot at its edge is pushed by a walk that passes its
 // middle. So a walk that closes on any bearing of a touched sector (less than 90 deg from it)
 // turns, its speed kept, to the nearest direction that closes on none; it stops if every
-// direction does. This comes after the steering and the backing off, before the own goal box.
+// direction does. This comes after the steering and the backing off, before the own goal box
+// and the field; a walk that those turn back onto a touched sector stops (a defender beside
+// its box, sidestepping towards it with an opponent ahead, was sent round the box's front
+// into the opponent: half the Python supporters' pushing fouls).
 //
 // Around robots (a tangent rule): the nearest obstacle ahead on the walk's line, within
 // AVOID_LOOKAHEAD and nearer than the target, and less than AVOID_CLEARANCE off the line,
@@ -113,6 +116,9 @@ bool inOwnBox(float x, float y);
 WalkVelocity steer(float forward, float left, const std::vector<Obstacle>& found, float targetDist);
 /// The sectors in which a robot touches this one (motion.touch*).
 std::vector<TouchedSector> touchedSectors(const api::MotionBlackboard& motion);
+/// Whether a walk in `direction` (rad, robot frame) closes on one of `sectors`
+/// (touchedSectors()): less than 90 deg from some bearing in it.
+bool closesOnTouch(const std::vector<TouchedSector>& sectors, float direction);
 /// The walk (forward, left) turned to the nearest direction that closes on no touched sector,
 /// its speed kept; (0, 0) when every direction closes on one.
 WalkVelocity keepOffTouches(const api::MotionBlackboard& motion, float forward, float left);
@@ -122,7 +128,8 @@ WalkVelocity keepOutOfOwnBox(const api::AbsCoord& pos, float forward, float left
 /// the body centre would be more than FIELD_EDGE_SLACK beyond that line.
 WalkVelocity keepOnField(const api::AbsCoord& pos, float forward, float left);
 /// (forward, left) off the touched sectors, out of the own goal box (all but the goalie) and
-/// on the field: the last word on every walk Avoid makes.
+/// on the field: the last word on every walk Avoid makes. A walk that the box or a line turns
+/// back onto a touched sector becomes (0, 0): waiting, not pushing.
 WalkVelocity keepClear(const api::Blackboard& blackboard, float forward, float left);
 /// The nearest obstacle within BLOCKED_OBSTACLE_DIST that the walk heads towards, if any.
 std::optional<Obstacle> blocker(const std::vector<Obstacle>& found, float forward, float left);
