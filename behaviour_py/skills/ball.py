@@ -1,5 +1,7 @@
-"""What the skills ask about the ball: seen recently, and where to stand behind it."""
+"""What the skills ask about the ball: seen recently, where to aim it, and where to stand behind it."""
 import math
+
+from .field import FIELD_EDGE_SLACK, FIELD_HALF_LENGTH, FIELD_HALF_WIDTH
 
 BALL_LOST_FRAMES = 30        # frames (1 s) without the ball before it counts as lost
 OPPONENT_GOAL_X = 3000.0     # mm: the opponent goal's centre on a 6000 mm field
@@ -23,3 +25,44 @@ def pointBehindBall(ball, goalX, goalY, behind):
     else:
         dirX, dirY = dx / dist, dy / dist
     return ball.x - behind * dirX, ball.y - behind * dirY, math.atan2(dirY, dirX)
+
+
+def kickAim(ballX, ballY, goalX, goalY, behind):
+    """(x, y): the point to aim the ball at (ballX, ballY) at, for the goal point (goalX,
+    goalY). The goal itself, unless standing `behind` mm behind the ball facing it would put
+    the robot more than FIELD_EDGE_SLACK beyond a line (no walk takes it there: a ball on a
+    line, where a ball out is put back, had strikers standing beside it for the 30 s until
+    game stuck). Then the aim turns towards that line's direction just enough for the robot to
+    stand FIELD_EDGE_SLACK beyond it, keeping its side of the goal: the point is the goal's
+    distance away along the turned aim. The touchlines first, then the goal lines."""
+    dx = goalX - ballX
+    dy = goalY - ballY
+    dist = math.sqrt(dx * dx + dy * dy)  # as pointBehindBall: the same bits in both ports
+    if dist < MIN_GOAL_DIST:
+        return goalX, goalY
+    dirX, dirY = dx / dist, dy / dist
+    turned = False
+    limitedY = limitAim(dirY, ballY, FIELD_HALF_WIDTH + FIELD_EDGE_SLACK, behind)
+    if limitedY != dirY:
+        dirY = limitedY
+        dirX = math.copysign(math.sqrt(max(0.0, 1.0 - dirY * dirY)), dirX)
+        turned = True
+    limitedX = limitAim(dirX, ballX, FIELD_HALF_LENGTH + FIELD_EDGE_SLACK, behind)
+    if limitedX != dirX:
+        dirX = limitedX
+        dirY = math.copysign(math.sqrt(max(0.0, 1.0 - dirX * dirX)), dirY)
+        turned = True
+    if not turned:
+        return goalX, goalY
+    return ballX + dist * dirX, ballY + dist * dirY
+
+
+def limitAim(component, ball, limit, behind):
+    """The aim's `component` along one axis, limited so that standing `behind` mm behind the
+    ball (at `ball` on that axis) keeps the robot within +-limit on it."""
+    standing = ball - behind * component
+    if standing > limit:
+        return max(-1.0, min(1.0, (ball - limit) / behind))
+    if standing < -limit:
+        return max(-1.0, min(1.0, (ball + limit) / behind))
+    return component

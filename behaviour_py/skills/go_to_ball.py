@@ -1,12 +1,12 @@
-"""GoToBall: walk to BEHIND_BALL_DIST behind the ball, facing the goal (via GoToPose, or
-LearnedGoToPose when given a policy).
+"""GoToBall: walk to BEHIND_BALL_DIST behind the ball, facing the goal, or along the line a
+ball on it lies on (ball.py's kickAim) (via GoToPose, or LearnedGoToPose when given a policy).
 
 Uses localisation.ballPos while the ball was seen recently; otherwise stands, leaving the
 head to search.
 """
 import actioncommand
 
-from .ball import BEHIND_BALL_DIST, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, ballRecentlySeen, pointBehindBall
+from .ball import BEHIND_BALL_DIST, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, ballRecentlySeen, kickAim, pointBehindBall
 from .go_to_pose import GoToPose
 from .learned_go_to_pose import LearnedGoToPose
 
@@ -24,6 +24,8 @@ class GoToBall:
     def tick(self, blackboard):
         if not ballRecentlySeen(blackboard):
             return actioncommand.compose(body=actioncommand.stand())
-        x, y, theta = pointBehindBall(blackboard.localisation.ballPos, self.goalX, self.goalY, self.behind)
+        ball = blackboard.localisation.ballPos
+        aimX, aimY = kickAim(ball.x, ball.y, self.goalX, self.goalY, self.behind)
+        x, y, theta = pointBehindBall(ball, aimX, aimY, self.behind)
         self.goToPose.setTarget(x, y, theta)
         return self.goToPose.tick(blackboard)

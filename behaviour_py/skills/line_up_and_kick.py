@@ -1,21 +1,24 @@
-"""LineUpAndKick: approach the ball (GoToBall), line the kicking foot up behind it facing
-the goal with small steps, and kick (or dribble) once aligned.
+"""LineUpAndKick: approach the ball (GoToBall), line the kicking foot up behind it facing the
+goal (or along the line a ball on it lies on: ball.py's kickAim) with small steps, and kick
+(or dribble) once aligned.
 
 The foot is chosen on the ball's side when lining up starts and kept until it ends. The aim
 may be off by KICK_FAR_ANGLE_TOLERANCE while the goal is far; while a robot (avoid.py's
-obstacles) is within CONTEST_DIST of the ball, the robot kicks at once wherever the kick gains
-ground (CONTEST_* tolerances) instead of lining up slowly under its feet. A contest in which
-the ball has not moved STALL_BALL_MOVE for STALL_FRAMES (kicks into an opponent's feet, the
-ball wedged) makes the robot step sideways round the ball, away from the nearest robot, for
-SIDESTEP_FRAMES, so the next kick has a clear line.
+obstacles) is within CONTEST_DIST of the ball, the robot kicks at once wherever the kick
+gains ground (CONTEST_* tolerances) instead of lining up slowly under its feet. A contest in
+which the ball has not moved STALL_BALL_MOVE for STALL_FRAMES (kicks into an opponent's
+feet, the ball wedged) makes the robot step sideways round the ball, away from the nearest
+robot, for SIDESTEP_FRAMES, so the next kick has a clear line. Lining-up steps and sidesteps
+keep off touched sectors (avoid's keepOffTouches): they were most of the pushing fouls left
+once Avoid's walks kept off them.
 """
 import math
 
 import actioncommand
 import robot
 
-from .avoid import obstacles, remember
-from .ball import BEHIND_BALL_DIST, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, ballRecentlySeen
+from .avoid import keepOffTouches, obstacles, remember
+from .ball import BEHIND_BALL_DIST, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, ballRecentlySeen, kickAim
 from .go_to_ball import GoToBall
 from .go_to_pose import TURN_GAIN
 from .robot_limits import clamp
@@ -73,7 +76,8 @@ class LineUpAndKick:
         pos = blackboard.localisation.robotPos
         ball = blackboard.localisation.ballPos
         ballRR = robot.toRobotRelative(pos, ball.x, ball.y)
-        aimError = robot.normaliseTheta(math.atan2(self.goalY - ball.y, self.goalX - ball.x) - pos.theta)
+        aimX, aimY = kickAim(ball.x, ball.y, self.goalX, self.goalY, BEHIND_BALL_DIST)
+        aimError = robot.normaliseTheta(math.atan2(aimY - ball.y, aimX - ball.x) - pos.theta)
         self.seen = remember(self.seen, blackboard)
         nearest, nearestY = CONTEST_DIST, 0.0  # the obstacle nearest the ball within CONTEST_DIST
         for x, y in obstacles(blackboard, self.seen):
@@ -91,7 +95,8 @@ class LineUpAndKick:
         if self.sidestepFrames > 0:  # a stalled contest: step round the ball for a clear kick
             self.sidestepFrames -= 1
             turn = clamp(TURN_GAIN * ballRR.heading, -LINE_UP_MAX_TURN, LINE_UP_MAX_TURN)
-            return actioncommand.compose(body=actioncommand.walk(0.0, self.sidestepLeft, turn))
+            forward, left = keepOffTouches(blackboard.motion, 0.0, self.sidestepLeft)
+            return actioncommand.compose(body=actioncommand.walk(forward, left, turn))
         if self.contested and math.hypot(ball.x - self.stallBall[0], ball.y - self.stallBall[1]) < STALL_BALL_MOVE:
             self.stalledFrames += 1
             if self.stalledFrames >= STALL_FRAMES:
@@ -101,7 +106,10 @@ class LineUpAndKick:
         else:
             self.stalledFrames = 0
             self.stallBall = (ball.x, ball.y)
-        return actioncommand.compose(body=self.lineUp(ballRR, aimError))
+        body = self.lineUp(ballRR, aimError)
+        if body.actionType == robot.ActionType.WALK:
+            body.forward, body.left = keepOffTouches(blackboard.motion, body.forward, body.left)
+        return actioncommand.compose(body=body)
 
     def updateLiningUp(self, ballRR, aimError):
         if self.liningUp:

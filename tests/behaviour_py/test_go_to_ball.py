@@ -6,7 +6,8 @@ import pytest
 import robot
 from boards import board
 
-from skills.ball import BALL_LOST_FRAMES, pointBehindBall
+from skills.ball import BALL_LOST_FRAMES, kickAim, pointBehindBall
+from skills.field import FIELD_EDGE_SLACK, FIELD_HALF_LENGTH, FIELD_HALF_WIDTH
 from skills.go_to_ball import GoToBall
 
 
@@ -20,6 +21,42 @@ def test_point_behind_ball_on_the_line_from_the_goal():
 def test_point_behind_ball_at_the_goal_aims_along_x():
     assert pointBehindBall(robot.AbsCoord(3000.0, 0.0), 3000.0, 0.0, 200.0) == pytest.approx((2800.0, 0.0, 0.0))
 
+
+
+def test_in_the_open_the_aim_is_the_goal():
+    assert kickAim(1000.0, 500.0, 3000.0, 0.0, 200.0) == (3000.0, 0.0)
+    assert kickAim(0.0, 1900.0, 3000.0, 0.0, 200.0) == (3000.0, 0.0)  # behind it is still on the field
+
+
+def standing(ballX, ballY, aim):
+    x, y, theta = pointBehindBall(robot.AbsCoord(ballX, ballY), aim[0], aim[1], 200.0)
+    return x, y, theta
+
+
+def test_a_ball_on_a_touchline_is_aimed_along_it_from_no_further_out_than_the_slack():
+    # Facing the goal from behind a ball on the touchline would stand the robot 141 mm
+    # beyond it; the aim turns towards the line until the robot stands FIELD_EDGE_SLACK out.
+    x, y, theta = standing(1000.0, FIELD_HALF_WIDTH, kickAim(1000.0, FIELD_HALF_WIDTH, 3000.0, 0.0, 200.0))
+    assert y == pytest.approx(FIELD_HALF_WIDTH + FIELD_EDGE_SLACK)
+    assert -math.pi / 4 < theta < 0.0  # between the goal's heading and the line's, inwards
+    x, y, theta = standing(1000.0, -FIELD_HALF_WIDTH, kickAim(1000.0, -FIELD_HALF_WIDTH, 3000.0, 0.0, 200.0))
+    assert y == pytest.approx(-FIELD_HALF_WIDTH - FIELD_EDGE_SLACK)
+    assert 0.0 < theta < math.pi / 4
+
+
+def test_a_ball_on_the_own_goal_line_is_aimed_out_to_its_goal_side():
+    x, y, theta = standing(-FIELD_HALF_LENGTH, 500.0, kickAim(-FIELD_HALF_LENGTH, 500.0, 3000.0, 0.0, 200.0))
+    assert x == pytest.approx(-FIELD_HALF_LENGTH - FIELD_EDGE_SLACK)
+    assert -math.pi / 2 < theta < -math.pi / 4  # along the line, towards the goal's side (-y)
+
+
+def test_beside_a_ball_on_the_touchline_it_stands_facing_along_the_line():
+    # Where it was: 100 mm short of a target out of its reach, the ball beside it, never lined up.
+    ball = (1000.0, FIELD_HALF_WIDTH)
+    x, y, theta = standing(*ball, kickAim(*ball, 3000.0, 0.0, 200.0))
+    skill = GoToBall()
+    assert skill.tick(board((x, y, theta), ball=ball)).body.actionType == robot.ActionType.STAND
+    assert skill.goToPose.arrived
 
 def test_walks_to_the_ball():
     command = GoToBall().tick(board((0.0, 0.0, 0.0), ball=(1000.0, 0.0)))

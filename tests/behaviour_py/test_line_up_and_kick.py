@@ -1,10 +1,13 @@
 """LineUpAndKick: approach, line up the foot, kick when aligned; the same cases as
 tests/behaviour_cpp/skills/test_line_up_and_kick.cpp."""
+import math
+
 import pytest
 import robot
 from boards import board, relative, seenRobot
 
-from skills.ball import BALL_LOST_FRAMES
+from skills.ball import BALL_LOST_FRAMES, BEHIND_BALL_DIST
+from skills.field import FIELD_EDGE_SLACK, FIELD_HALF_WIDTH
 from skills.go_to_ball import GoToBall
 from skills.line_up_and_kick import SIDESTEP_FRAMES, STALL_FRAMES, LineUpAndKick
 
@@ -30,6 +33,15 @@ def test_ball_in_front_of_the_right_foot_kicks_right():
     assert (body.actionType, body.foot) == (KICK, robot.Foot.RIGHT)
 
 
+
+def test_lining_up_never_steps_into_a_robot_it_touches():
+    # Lining up, the ball ahead and to the left: a step forward and left, unless a robot
+    # against the left arm is there; then forward and right (avoid.py's keepOffTouches).
+    free = LineUpAndKick().tick(board(ORIGIN, ball=(250.0, 150.0))).body
+    assert free.actionType == WALK and free.forward > 0.0 and free.left > 0.0
+    touched = LineUpAndKick().tick(board(ORIGIN, ball=(250.0, 150.0), touch=("Left",))).body
+    assert touched.actionType == WALK and touched.forward > 0.0 and touched.left < 0.0
+
 def test_not_facing_the_goal_turns_instead_of_kicking():
     pos = (1500.0, 0.0, 0.3)  # ball in front of the left foot, goal 0.36 rad to the right
     command = LineUpAndKick().tick(board(pos, ball=relative(pos, 130.0, 50.0)))
@@ -42,6 +54,18 @@ def test_far_from_the_goal_a_kick_off_its_line_is_taken():
     body = LineUpAndKick().tick(board(pos, ball=relative(pos, 130.0, 50.0))).body
     assert (body.actionType, body.foot) == (KICK, robot.Foot.LEFT)
 
+
+
+def test_a_ball_on_the_touchline_is_kicked_along_it():
+    # The goal 1.1 rad to the right: facing it, the robot would stand beyond the line. Facing
+    # along the line (turned inwards as far as the slack lets it stand out) it kicks.
+    theta = math.asin((FIELD_HALF_WIDTH - (FIELD_HALF_WIDTH + FIELD_EDGE_SLACK)) / BEHIND_BALL_DIST)
+    ball = (2000.0, FIELD_HALF_WIDTH)
+    pos = (ball[0] - 130.0 * math.cos(theta) + 50.0 * math.sin(theta),
+           ball[1] - 130.0 * math.sin(theta) - 50.0 * math.cos(theta), theta)
+    assert relative(pos, 130.0, 50.0) == pytest.approx(ball)
+    body = LineUpAndKick().tick(board(pos, ball=ball)).body
+    assert (body.actionType, body.foot) == (KICK, robot.Foot.LEFT)
 
 # The goal 1.04 rad to the right, the ball 60 mm beyond the kicking spot and 50 mm off the
 # left foot's line: an approach alone, a kick at once when a robot is near the ball.

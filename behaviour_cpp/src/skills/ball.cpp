@@ -1,6 +1,9 @@
 #include "touchline/behaviour/skills/ball.hpp"
 
+#include <algorithm>
 #include <cmath>
+
+#include "touchline/behaviour/skills/field.hpp"
 
 namespace touchline::behaviour::skills {
 
@@ -30,6 +33,36 @@ FieldPose pointBehindBallExact(const api::AbsCoord& ball, double goalX, double g
     dirY = dy / dist;
   }
   return {double{ball.x} - behind * dirX, double{ball.y} - behind * dirY, std::atan2(dirY, dirX)};
+}
+
+FieldPointExact kickAim(double ballX, double ballY, double goalX, double goalY, double behind) {
+  const double dx = goalX - ballX;
+  const double dy = goalY - ballY;
+  const double dist = std::sqrt(dx * dx + dy * dy); // as pointBehindBallExact
+  if (dist < MIN_GOAL_DIST) return {goalX, goalY};
+  double dirX = dx / dist, dirY = dy / dist;
+  bool turned = false;
+  const double limitedY = limitAim(dirY, ballY, double{FIELD_HALF_WIDTH} + double{FIELD_EDGE_SLACK}, behind);
+  if (limitedY != dirY) {
+    dirY = limitedY;
+    dirX = std::copysign(std::sqrt(std::max(0.0, 1.0 - dirY * dirY)), dirX);
+    turned = true;
+  }
+  const double limitedX = limitAim(dirX, ballX, double{FIELD_HALF_LENGTH} + double{FIELD_EDGE_SLACK}, behind);
+  if (limitedX != dirX) {
+    dirX = limitedX;
+    dirY = std::copysign(std::sqrt(std::max(0.0, 1.0 - dirX * dirX)), dirY);
+    turned = true;
+  }
+  if (!turned) return {goalX, goalY};
+  return {ballX + dist * dirX, ballY + dist * dirY};
+}
+
+double limitAim(double component, double ball, double limit, double behind) {
+  const double standing = ball - behind * component;
+  if (standing > limit) return std::clamp((ball - limit) / behind, -1.0, 1.0);
+  if (standing < -limit) return std::clamp((ball + limit) / behind, -1.0, 1.0);
+  return component;
 }
 
 } // namespace touchline::behaviour::skills

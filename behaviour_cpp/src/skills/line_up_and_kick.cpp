@@ -27,7 +27,9 @@ ActionCommand::All LineUpAndKick::tick(const Blackboard& blackboard) {
   const AbsCoord pos = blackboard.localisation.robotPos;
   const AbsCoord ball = blackboard.localisation.ballPos;
   const RRCoord ballRR = toRobotRelative(pos, ball.x, ball.y);
-  const float aimError = normaliseTheta(std::atan2(goalY_ - ball.y, goalX_ - ball.x) - pos.theta);
+  const FieldPointExact aim = kickAim(ball.x, ball.y, goalX_, goalY_, BEHIND_BALL_DIST);
+  const float aimError = normaliseTheta(
+      std::atan2(static_cast<float>(aim.y) - ball.y, static_cast<float>(aim.x) - ball.x) - pos.theta);
   seen_ = remember(seen_, blackboard);
   float nearest = CONTEST_DIST, nearestY = 0.f; // the obstacle nearest the ball within CONTEST_DIST
   for (const Obstacle& o : obstacles(blackboard, seen_)) {
@@ -47,8 +49,9 @@ ActionCommand::All LineUpAndKick::tick(const Blackboard& blackboard) {
   }
   if (sidestepFrames_ > 0) { // a stalled contest: step round the ball for a clear kick
     --sidestepFrames_;
+    const WalkVelocity v = keepOffTouches(blackboard.motion, 0.f, sidestepLeft_);
     return actioncommand::compose(
-        {}, actioncommand::walk(0.f, sidestepLeft_, clamp(TURN_GAIN * ballRR.heading, -LINE_UP_MAX_TURN, LINE_UP_MAX_TURN)));
+        {}, actioncommand::walk(v.forward, v.left, clamp(TURN_GAIN * ballRR.heading, -LINE_UP_MAX_TURN, LINE_UP_MAX_TURN)));
   }
   if (contested_ && std::hypot(ball.x - stallBallX_, ball.y - stallBallY_) < STALL_BALL_MOVE) {
     if (++stalledFrames_ >= STALL_FRAMES) {
@@ -61,7 +64,13 @@ ActionCommand::All LineUpAndKick::tick(const Blackboard& blackboard) {
     stallBallX_ = ball.x;
     stallBallY_ = ball.y;
   }
-  return actioncommand::compose({}, lineUp(ballRR, aimError));
+  ActionCommand::Body body = lineUp(ballRR, aimError);
+  if (body.actionType == ActionCommand::ActionType::WALK) {
+    const WalkVelocity v = keepOffTouches(blackboard.motion, body.forward, body.left);
+    body.forward = v.forward;
+    body.left = v.left;
+  }
+  return actioncommand::compose({}, body);
 }
 
 void LineUpAndKick::updateLiningUp(const RRCoord& ballRR, float aimError) {

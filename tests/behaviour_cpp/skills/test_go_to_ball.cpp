@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include "boards.hpp"
+#include "touchline/behaviour/skills/ball.hpp"
+#include "touchline/behaviour/skills/field.hpp"
 
 using namespace touchline::api;
 using namespace touchline::behaviour::skills;
@@ -26,6 +28,51 @@ TEST(GoToBallSkill, PointBehindBallOnTheLineFromTheGoal) {
 
 TEST(GoToBallSkill, PointBehindBallAtTheGoalAimsAlongX) {
   expectPose(pointBehindBall({3000.f, 0.f, 0.f}, 3000.f, 0.f, 200.f), 2800.f, 0.f, 0.f);
+}
+
+TEST(GoToBallSkill, InTheOpenTheAimIsTheGoal) {
+  const FieldPointExact open = kickAim(1000.0, 500.0, 3000.0, 0.0, 200.0);
+  EXPECT_EQ(open.x, 3000.0);
+  EXPECT_EQ(open.y, 0.0);
+  const FieldPointExact nearLine = kickAim(0.0, 1900.0, 3000.0, 0.0, 200.0); // behind it is still on the field
+  EXPECT_EQ(nearLine.x, 3000.0);
+  EXPECT_EQ(nearLine.y, 0.0);
+}
+
+namespace {
+/// Where a robot stands behind the ball at (ballX, ballY) aiming at kickAim's point.
+AbsCoord standing(float ballX, float ballY) {
+  const FieldPointExact aim = kickAim(ballX, ballY, 3000.0, 0.0, 200.0);
+  return pointBehindBall({ballX, ballY, 0.f}, static_cast<float>(aim.x), static_cast<float>(aim.y), 200.f);
+}
+} // namespace
+
+TEST(GoToBallSkill, ABallOnATouchlineIsAimedAlongItFromNoFurtherOutThanTheSlack) {
+  // Facing the goal from behind a ball on the touchline would stand the robot 141 mm
+  // beyond it; the aim turns towards the line until the robot stands FIELD_EDGE_SLACK out.
+  const AbsCoord left = standing(1000.f, FIELD_HALF_WIDTH);
+  EXPECT_NEAR(left.y, FIELD_HALF_WIDTH + FIELD_EDGE_SLACK, 1e-2f);
+  EXPECT_GT(left.theta, -kPi / 4); // between the goal's heading and the line's, inwards
+  EXPECT_LT(left.theta, 0.f);
+  const AbsCoord right = standing(1000.f, -FIELD_HALF_WIDTH);
+  EXPECT_NEAR(right.y, -FIELD_HALF_WIDTH - FIELD_EDGE_SLACK, 1e-2f);
+  EXPECT_GT(right.theta, 0.f);
+  EXPECT_LT(right.theta, kPi / 4);
+}
+
+TEST(GoToBallSkill, ABallOnTheOwnGoalLineIsAimedOutToItsGoalSide) {
+  const AbsCoord stand = standing(-FIELD_HALF_LENGTH, 500.f);
+  EXPECT_NEAR(stand.x, -FIELD_HALF_LENGTH - FIELD_EDGE_SLACK, 1e-2f);
+  EXPECT_GT(stand.theta, -kPi / 2); // along the line, towards the goal's side (-y)
+  EXPECT_LT(stand.theta, -kPi / 4);
+}
+
+TEST(GoToBallSkill, BesideABallOnTheTouchlineItStandsFacingAlongTheLine) {
+  // Where it was: 100 mm short of a target out of its reach, the ball beside it, never lined up.
+  GoToBall skill;
+  EXPECT_EQ(skill.tick(board(standing(1000.f, FIELD_HALF_WIDTH), 1000.f, FIELD_HALF_WIDTH)).body.actionType,
+            ActionCommand::ActionType::STAND);
+  EXPECT_TRUE(skill.goToPose().arrived());
 }
 
 TEST(GoToBallSkill, WalksToTheBall) {

@@ -7,6 +7,8 @@
 #include <cmath>
 
 #include "boards.hpp"
+#include "touchline/behaviour/skills/ball.hpp"
+#include "touchline/behaviour/skills/field.hpp"
 
 using namespace touchline::api;
 using namespace touchline::behaviour::skills;
@@ -50,10 +52,40 @@ TEST(LineUpAndKickSkill, NotFacingTheGoalTurnsInsteadOfKicking) {
   expectVelocities(command, 0.f, 0.f, -0.5f);
 }
 
+TEST(LineUpAndKickSkill, LiningUpNeverStepsIntoARobotItTouches) {
+  // Lining up, the ball ahead and to the left: a step forward and left, unless a robot
+  // against the left arm is there; then forward and right (avoid.hpp's keepOffTouches).
+  const auto free = LineUpAndKick().tick(ballAt(250.f, 150.f)).body;
+  EXPECT_EQ(free.actionType, ActionType::WALK);
+  EXPECT_GT(free.forward, 0.f);
+  EXPECT_GT(free.left, 0.f);
+  Blackboard touching = ballAt(250.f, 150.f);
+  touching.motion.touchLeft = true;
+  const auto touched = LineUpAndKick().tick(touching).body;
+  EXPECT_EQ(touched.actionType, ActionType::WALK);
+  EXPECT_GT(touched.forward, 0.f);
+  EXPECT_LT(touched.left, 0.f);
+}
+
 TEST(LineUpAndKickSkill, FarFromTheGoalAKickOffItsLineIsTaken) {
   const AbsCoord pos{0.f, 0.f, 0.3f}; // the goal 3 km away, 0.33 rad to the right
   const auto [x, y] = relative(pos, 130.f, 50.f);
   const auto body = LineUpAndKick().tick(board(pos, x, y)).body;
+  EXPECT_EQ(body.actionType, ActionType::KICK);
+  EXPECT_EQ(body.foot, Foot::LEFT);
+}
+
+TEST(LineUpAndKickSkill, ABallOnTheTouchlineIsKickedAlongIt) {
+  // The goal 1.1 rad to the right: facing it, the robot would stand beyond the line. Facing
+  // along the line (turned inwards as far as the slack lets it stand out) it kicks.
+  const float theta = std::asin((FIELD_HALF_WIDTH - (FIELD_HALF_WIDTH + FIELD_EDGE_SLACK)) / BEHIND_BALL_DIST);
+  const float ballX = 2000.f, ballY = FIELD_HALF_WIDTH;
+  const AbsCoord pos{ballX - 130.f * std::cos(theta) + 50.f * std::sin(theta),
+                     ballY - 130.f * std::sin(theta) - 50.f * std::cos(theta), theta};
+  const auto [x, y] = relative(pos, 130.f, 50.f);
+  EXPECT_NEAR(x, ballX, 1e-2f);
+  EXPECT_NEAR(y, ballY, 1e-2f);
+  const auto body = LineUpAndKick().tick(board(pos, ballX, ballY)).body;
   EXPECT_EQ(body.actionType, ActionType::KICK);
   EXPECT_EQ(body.foot, Foot::LEFT);
 }

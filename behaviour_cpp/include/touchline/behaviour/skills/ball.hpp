@@ -1,5 +1,5 @@
 #pragma once
-// What the skills ask about the ball: seen recently, and where to stand behind it. The
+// What the skills ask about the ball: seen recently, where to aim it, and where to stand behind it. The
 // port of behaviour_py/skills/ball.py.
 #include "touchline/robot_api/blackboard.hpp"
 
@@ -15,6 +15,25 @@ bool ballRecentlySeen(const api::Blackboard& blackboard);
 
 /// (x, y, theta): `behind` mm from `ball` on the line from the goal through the ball, facing the goal.
 api::AbsCoord pointBehindBall(const api::AbsCoord& ball, float goalX, float goalY, float behind);
+
+/// A field point in double, mm.
+struct FieldPointExact {
+  double x = 0, y = 0;
+};
+
+/// The point to aim the ball at (ballX, ballY) at, for the goal point (goalX, goalY): the
+/// goal itself, unless standing `behind` mm behind the ball facing it would put the robot
+/// more than FIELD_EDGE_SLACK beyond a line (no walk takes it there: a ball on a line, where
+/// a ball out is put back, had strikers standing beside it for the 30 s until game stuck).
+/// Then the aim turns towards that line's direction just enough for the robot to stand
+/// FIELD_EDGE_SLACK beyond it, keeping its side of the goal: the point is the goal's distance
+/// away along the turned aim. The touchlines first, then the goal lines. In double, operation
+/// for operation as Python computes it (the learned walker's target is built on it).
+FieldPointExact kickAim(double ballX, double ballY, double goalX, double goalY, double behind);
+
+/// The aim's `component` along one axis, limited so that standing `behind` mm behind the
+/// ball (at `ball` on that axis) keeps the robot within +-limit on it.
+double limitAim(double component, double ball, double limit, double behind);
 
 /// A field pose in double: mm, mm, rad.
 struct FieldPose {

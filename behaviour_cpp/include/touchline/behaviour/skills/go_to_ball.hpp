@@ -1,6 +1,6 @@
 #pragma once
-// GoToBall: walk to BEHIND_BALL_DIST behind the ball, facing the goal (via GoToPose, or
-// LearnedGoToPose when given a policy); the port of behaviour_py/skills/go_to_ball.py. Uses
+// GoToBall: walk to BEHIND_BALL_DIST behind the ball, facing the goal, or along the line a
+// ball on it lies on (ball.hpp's kickAim) (via GoToPose, or LearnedGoToPose when given a policy); the port of behaviour_py/skills/go_to_ball.py. Uses
 // localisation.ballPos while the ball was seen recently; otherwise stands, leaving the head
 // to search.
 #include <optional>

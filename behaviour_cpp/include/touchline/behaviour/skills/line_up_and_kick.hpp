@@ -1,13 +1,15 @@
 #pragma once
 // LineUpAndKick: approach the ball (GoToBall), line the kicking foot up behind it facing the
-// goal with small steps, and kick (or dribble) once aligned. The foot is chosen on the
-// ball's side when lining up starts and kept until it ends. The aim may be off by
-// KICK_FAR_ANGLE_TOLERANCE while the goal is far; while a robot (avoid.hpp's obstacles) is
-// within CONTEST_DIST of the ball, the robot kicks at once wherever the kick gains ground
-// (CONTEST_* tolerances) instead of lining up slowly under its feet. A contest in which the
-// ball has not moved STALL_BALL_MOVE for STALL_FRAMES (kicks into an opponent's feet, the ball
-// wedged) makes the robot step sideways round the ball, away from the nearest robot, for
-// SIDESTEP_FRAMES, so the next kick has a clear line. The port of
+// goal (or along the line a ball on it lies on: ball.hpp's kickAim) with small steps, and kick
+// (or dribble) once aligned. The foot is chosen on the ball's side when lining up starts and
+// kept until it ends. The aim may be off by KICK_FAR_ANGLE_TOLERANCE while the goal is far;
+// while a robot (avoid.hpp's obstacles) is within CONTEST_DIST of the ball, the robot kicks at
+// once wherever the kick gains ground (CONTEST_* tolerances) instead of lining up slowly under
+// its feet. A contest in which the ball has not moved STALL_BALL_MOVE for STALL_FRAMES (kicks
+// into an opponent's feet, the ball wedged) makes the robot step sideways round the ball, away
+// from the nearest robot, for SIDESTEP_FRAMES, so the next kick has a clear line. Lining-up
+// steps and sidesteps keep off touched sectors (avoid's keepOffTouches): they were most of the
+// pushing fouls left once Avoid's walks kept off them. The port of
 // behaviour_py/skills/line_up_and_kick.py.
 #include <optional>
 #include <string>
