@@ -5,7 +5,9 @@ MESSAGE_EVERY_FRAMES frames (counted by its own ticks, never wall time), the req
 robot's team message. The body:
 penalised or fallen: stand (it gets up by itself); INITIAL, STANDBY, SET, FINISHED: stand; READY: walk
 to the player number's kick-off position (a fixed legal formation in the own half, outside
-the centre circle: the API does not say which team kicks off); PLAYING: the role's skill,
+the centre circle, but for player 2 when its team kicks off: the ball is then before its
+foot, and the kick-off is kicked as PLAYING begins, where from outside the circle the ball
+lay still for the first 3.5 s); PLAYING: the role's skill,
 roles assigned from the team messages (team_comm.assignRole) unless fixed. A field player
 that has not seen the ball for SEARCH_TURN_FRAMES searches (search.py: the team ball, else a
 short turn on the spot and a walk to a search spot, in cycles).
@@ -32,6 +34,8 @@ READY_GOALIE_X = GOALIE_HOME_X   # mm: the kick-off formation (player 1 ...
 READY_GOALIE_Y = 0.0
 READY_STRIKER_X = -700.0         # mm: ... player 2, outside the 600 mm centre circle ...
 READY_STRIKER_Y = 0.0
+READY_KICKER_X = -150.0          # mm: ... or, when its team kicks off, inside it with the ball
+READY_KICKER_Y = -50.0           # mm: (the centre mark) before its left foot, to kick at once ...
 READY_DEFENDER_X = -1800.0       # mm: ... player 3 ...
 READY_DEFENDER_Y = -600.0
 READY_MIDFIELDER_X = -1200.0     # mm: ... player 4; players 5 on: 3 and 4 mirrored in y)
@@ -48,13 +52,14 @@ def formationRole(playerNumber):
     return ROLE_DEFENDER if playerNumber % 2 == 1 else ROLE_MIDFIELDER
 
 
-def readyPosition(playerNumber):
-    """(x, y) of the player's kick-off position, team frame, facing +x."""
+def readyPosition(playerNumber, kickingOff=False):
+    """(x, y) of the player's kick-off position, team frame, facing +x; kickingOff: its team
+    kicks off."""
     role = formationRole(playerNumber)
     if role == ROLE_GOALIE:
         return READY_GOALIE_X, READY_GOALIE_Y
     if role == ROLE_STRIKER:
-        return READY_STRIKER_X, READY_STRIKER_Y
+        return (READY_KICKER_X, READY_KICKER_Y) if kickingOff else (READY_STRIKER_X, READY_STRIKER_Y)
     mirror = -1.0 if playerNumber >= 5 else 1.0
     if role == ROLE_DEFENDER:
         return READY_DEFENDER_X, mirror * READY_DEFENDER_Y
@@ -125,7 +130,7 @@ class Team:
         if gc.penalised or blackboard.motion.fallen:
             return actioncommand.stand()
         if gc.state == robot.GameState.READY:
-            x, y = readyPosition(gc.playerNumber)
+            x, y = readyPosition(gc.playerNumber, gc.kickOffTeam == gc.team)
             self.readyPose.setTarget(x, y, 0.0)
             return self.readyPose.tick(blackboard).body
         if gc.state != robot.GameState.PLAYING:

@@ -191,6 +191,8 @@ PyGetSetDef g_game_controller_fields[] = {
     TL_FIELD(GameControllerBlackboard, penalised, nullptr),
     TL_FIELD(GameControllerBlackboard, score, "[team 0's, team 1's]"),
     TL_FIELD(GameControllerBlackboard, secsRemaining, nullptr),
+    TL_FIELD(GameControllerBlackboard, firstHalf, "in the first half"),
+    TL_FIELD(GameControllerBlackboard, kickOffTeam, "the team index (0 or 1) that kicks off"),
     TL_FIELD(GameControllerBlackboard, setPlay, "robot.SetPlay"),
     TL_FIELD(GameControllerBlackboard, setPlayTeam, "the team index taking the set play, -1: none"),
     {nullptr, nullptr, nullptr, nullptr, nullptr}};

@@ -175,12 +175,25 @@ def test_ties_go_to_the_lower_number_and_strikers_keep_a_margin():
 def test_ready_walks_to_the_formation():
     assert readyPosition(1) == pytest.approx((-2700.0, 0.0))
     assert readyPosition(2) == pytest.approx((-700.0, 0.0))
+    assert readyPosition(2, kickingOff=True) == pytest.approx((-150.0, -50.0))  # inside the circle at the ball
+    assert readyPosition(3, kickingOff=True) == pytest.approx((-1800.0, -600.0))
     assert readyPosition(3) == pytest.approx((-1800.0, -600.0))
     assert readyPosition(4) == pytest.approx((-1200.0, 900.0))
     assert readyPosition(5) == pytest.approx((-1800.0, 600.0))
-    command = Team().tick(board((-2000.0, 0.0, 0.0), state=GS.READY, player=2))
+    command = Team().tick(board((-2000.0, 0.0, 0.0), state=GS.READY, player=2, kickOffTeam=1))
     assert (command.body.actionType, command.body.forward, command.body.turn) == (WALK, pytest.approx(300.0), 0.0)
 
+
+
+def test_the_kicker_of_a_kick_off_kicks_as_play_begins():
+    # At its kick-off spot, the ball on the centre mark: a kick at once, where the striker of
+    # the other team, outside the circle, walks to the ball.
+    kicker = Team().tick(board((-150.0, -50.0, 0.0), ball=(0.0, 0.0), player=2, kickOffTeam=0))
+    assert kicker.body.actionType == robot.ActionType.KICK
+    command = Team().tick(board((-150.0, -50.0, 0.0), state=GS.READY, player=2, kickOffTeam=0))
+    assert command.body.actionType == STAND  # arrived: it stays there
+    command = Team().tick(board((-150.0, -50.0, 0.0), state=GS.READY, player=2, kickOffTeam=1))
+    assert command.body.actionType == WALK  # the other team kicks off: out of the circle
 
 @pytest.mark.parametrize("state", [GS.INITIAL, GS.SET, GS.FINISHED])
 def test_initial_set_finished_stand_with_the_head_on_the_ball(state):

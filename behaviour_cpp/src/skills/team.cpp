@@ -13,10 +13,11 @@ int formationRole(int playerNumber) {
   return playerNumber % 2 == 1 ? ROLE_DEFENDER : ROLE_MIDFIELDER;
 }
 
-FieldPoint readyPosition(int playerNumber) {
+FieldPoint readyPosition(int playerNumber, bool kickingOff) {
   const int role = formationRole(playerNumber);
   if (role == ROLE_GOALIE) return {READY_GOALIE_X, READY_GOALIE_Y};
-  if (role == ROLE_STRIKER) return {READY_STRIKER_X, READY_STRIKER_Y};
+  if (role == ROLE_STRIKER)
+    return kickingOff ? FieldPoint{READY_KICKER_X, READY_KICKER_Y} : FieldPoint{READY_STRIKER_X, READY_STRIKER_Y};
   const float mirror = playerNumber >= 5 ? -1.f : 1.f;
   if (role == ROLE_DEFENDER) return {READY_DEFENDER_X, mirror * READY_DEFENDER_Y};
   return {READY_MIDFIELDER_X, mirror * READY_MIDFIELDER_Y};
@@ -61,7 +62,7 @@ ActionCommand::Body Team::body(const Blackboard& blackboard) {
   if (!playing) unstick_.reset(); // stuck counts in play only
   if (gc.penalised || blackboard.motion.fallen) return actioncommand::stand();
   if (gc.state == GameState::READY) {
-    const FieldPoint ready = readyPosition(gc.playerNumber);
+    const FieldPoint ready = readyPosition(gc.playerNumber, gc.kickOffTeam == gc.team);
     readyPose_.setTarget(ready.x, ready.y, 0.f);
     return readyPose_.tick(blackboard).body;
   }

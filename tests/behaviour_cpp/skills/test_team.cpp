@@ -185,13 +185,28 @@ TEST(TeamRoles, TiesGoToTheLowerNumberAndStrikersKeepAMargin) {
 TEST(TeamBehaviour, ReadyWalksToTheFormation) {
   expectPoint(readyPosition(1), -2700.f, 0.f);
   expectPoint(readyPosition(2), -700.f, 0.f);
+  expectPoint(readyPosition(2, true), -150.f, -50.f); // inside the circle at the ball
+  expectPoint(readyPosition(3, true), -1800.f, -600.f);
   expectPoint(readyPosition(3), -1800.f, -600.f);
   expectPoint(readyPosition(4), -1200.f, 900.f);
   expectPoint(readyPosition(5), -1800.f, 600.f);
-  const auto command = Team().tick(teamBoard({-2000.f, 0.f, 0.f}, 1000.f, 0.f, true, 0, GameState::READY, 2));
+  Blackboard ready = teamBoard({-2000.f, 0.f, 0.f}, 1000.f, 0.f, true, 0, GameState::READY, 2);
+  ready.gameController.kickOffTeam = 1; // the other team kicks off: the formation's spot, straight ahead
+  const auto command = Team().tick(ready);
   EXPECT_EQ(command.body.actionType, AT::WALK);
   EXPECT_NEAR(command.body.forward, 300.f, 1e-3f);
   EXPECT_EQ(command.body.turn, 0.f);
+}
+
+TEST(TeamBehaviour, TheKickerOfAKickOffKicksAsPlayBegins) {
+  // At its kick-off spot, the ball on the centre mark: a kick at once, where the striker of
+  // the other team, outside the circle, walks to the ball.
+  const AbsCoord spot{-150.f, -50.f, 0.f};
+  EXPECT_EQ(Team().tick(teamBoard(spot, 0.f, 0.f)).body.actionType, AT::KICK);
+  Blackboard ready = teamBoard(spot, 1000.f, 0.f, true, 0, GameState::READY, 2);
+  EXPECT_EQ(Team().tick(ready).body.actionType, AT::STAND); // arrived: it stays there
+  ready.gameController.kickOffTeam = 1;                     // the other team kicks off: out of the circle
+  EXPECT_EQ(Team().tick(ready).body.actionType, AT::WALK);
 }
 
 TEST(TeamBehaviour, InitialSetFinishedStandWithTheHeadOnTheBall) {

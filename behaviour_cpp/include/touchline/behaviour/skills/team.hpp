@@ -7,7 +7,9 @@
 // this robot's team message. The body:
 // penalised or fallen: stand (it gets up by itself); INITIAL, SET, FINISHED: stand; READY:
 // walk to the player number's kick-off position (a fixed legal formation in the own half,
-// outside the centre circle: the API does not say which team kicks off); PLAYING: the role's
+// outside the centre circle, but for player 2 when its team kicks off: the ball is then
+// before its foot, and the kick-off is kicked as PLAYING begins, where from outside the
+// circle the ball lay still for the first 3.5 s); PLAYING: the role's
 // skill, roles assigned from the team messages (assignRole) unless fixed. A field player that
 // has not seen the ball for SEARCH_TURN_FRAMES searches (search.hpp: the team ball, else a
 // short turn on the spot and a walk to a search spot, in cycles).
@@ -31,6 +33,8 @@ inline constexpr float READY_GOALIE_X = GOALIE_HOME_X;        ///< mm: the kick-
 inline constexpr float READY_GOALIE_Y = 0.f;
 inline constexpr float READY_STRIKER_X = -700.f;              ///< mm: ... player 2, outside the 600 mm centre circle ...
 inline constexpr float READY_STRIKER_Y = 0.f;
+inline constexpr float READY_KICKER_X = -150.f;               ///< mm: ... or, when its team kicks off, inside it with the ball
+inline constexpr float READY_KICKER_Y = -50.f;                ///< mm: (the centre mark) before its left foot, to kick at once ...
 inline constexpr float READY_DEFENDER_X = -1800.f;            ///< mm: ... player 3 ...
 inline constexpr float READY_DEFENDER_Y = -600.f;
 inline constexpr float READY_MIDFIELDER_X = -1200.f;          ///< mm: ... player 4; players 5 on: 3 and 4 mirrored in y)
@@ -39,8 +43,9 @@ inline constexpr float READY_MIDFIELDER_Y = 900.f;
 /// The role whose kick-off position a player takes: 1 goalie, 2 striker, 3 defender,
 /// 4 midfielder, then defender and midfielder alternately.
 int formationRole(int playerNumber);
-/// (x, y) of the player's kick-off position, team frame, facing +x.
-FieldPoint readyPosition(int playerNumber);
+/// (x, y) of the player's kick-off position, team frame, facing +x; kickingOff: its team
+/// kicks off.
+FieldPoint readyPosition(int playerNumber, bool kickingOff = false);
 /// This robot's TeamInfo from its Blackboard.
 TeamInfo messageInfo(const api::Blackboard& blackboard, int role);
 
