@@ -31,8 +31,8 @@ def kickAim(ballX, ballY, goalX, goalY, behind):
     """(x, y): the point to aim the ball at (ballX, ballY) at, for the goal point (goalX,
     goalY). The goal itself, unless standing `behind` mm behind the ball facing it would put
     the robot more than FIELD_EDGE_SLACK beyond a line (no walk takes it there: a ball on a
-    line, where a ball out is put back, had strikers standing beside it for the 30 s until
-    game stuck). Then the aim turns towards that line's direction just enough for the robot to
+    line, where a ball out is put back, had strikers standing beside it until someone else
+    moved it). Then the aim turns towards that line's direction just enough for the robot to
     stand FIELD_EDGE_SLACK beyond it, keeping its side of the goal: the point is the goal's
     distance away along the turned aim. The touchlines first, then the goal lines."""
     dx = goalX - ballX
