@@ -29,8 +29,8 @@ def test_in_the_open_the_aim_is_the_goal():
 
 
 def standing(ballX, ballY, aim):
-    x, y, theta = pointBehindBall(robot.AbsCoord(ballX, ballY), aim[0], aim[1], 200.0)
-    return x, y, theta
+    """(x, y, theta) of a robot 200 mm behind the ball at (ballX, ballY), facing the point aim."""
+    return pointBehindBall(robot.AbsCoord(ballX, ballY), aim[0], aim[1], 200.0)
 
 
 def test_a_ball_on_a_touchline_is_aimed_along_it_from_no_further_out_than_the_slack():

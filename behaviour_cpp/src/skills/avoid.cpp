@@ -108,15 +108,14 @@ WalkVelocity keepOffTouches(const MotionBlackboard& motion, float forward, float
   const std::vector<TouchedSector> sectors = touchedSectors(motion);
   if (speed < MIN_WALK_SPEED || sectors.empty()) return {forward, left};
   const auto reach = [](const TouchedSector& s) { return s.halfWidth + kPi / 2; }; // the directions closing on it
-  const auto closes = [&](float direction) { return closesOnTouch(sectors, direction); };
   const float direction = std::atan2(left, forward);
-  if (!closes(direction)) return {forward, left};
+  if (!closesOnTouch(sectors, direction)) return {forward, left};
   bool any = false; // best: the edge turning the walk least; the first of equal turns (within 1e-4 rad) wins
   float best = 0, bestOff = 0;
   for (const TouchedSector& s : sectors) {
     for (const float side : {-1.f, 1.f}) {
       const float edge = s.middle + side * reach(s);
-      if (closes(edge)) continue;
+      if (closesOnTouch(sectors, edge)) continue;
       const float off = std::fabs(normaliseTheta(edge - direction));
       if (!any || off < bestOff - 1e-4f) {
         any = true;
