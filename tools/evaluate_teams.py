@@ -6,6 +6,9 @@ of two grid cells played side by side on every core:
   supporters_cpp: the same in C++ (cpp:Team against cpp:Striker): the same decisions (the port
                   corpus), several times faster, so it affords more matches
   ports:          the Python team (py:Team) against its C++ port (cpp:Team)
+  ports_swapped:  the same with the sides swapped (cpp:Team as team 0); with ports, the
+                  results gain "ports_both_sides": Python's goal difference over both
+                  arrangements, so the side a team plays on cancels out
   roles:          the supporters' tuned numbers (py:Team, supporters=tuned, the default) against
                   the thesis's own Algorithms 4.1 and 4.2 (py:Team,supporters=thesis)
   roles_cpp:      the same in C++
@@ -33,7 +36,8 @@ import touchline_paths
 from touchline_version import add_version_option
 
 EXPERIMENTS = {"supporters": ("py:Team", "py:Striker"), "supporters_cpp": ("cpp:Team", "cpp:Striker"),
-               "ports": ("py:Team", "cpp:Team"), "roles": ("py:Team", "py:Team,supporters=thesis"),
+               "ports": ("py:Team", "cpp:Team"), "ports_swapped": ("cpp:Team", "py:Team"),
+               "roles": ("py:Team", "py:Team,supporters=thesis"),
                "roles_cpp": ("cpp:Team", "cpp:Team,supporters=thesis"),
                "supporters_thesis_cpp": ("cpp:Team,supporters=thesis", "cpp:Striker")}
 
@@ -67,6 +71,17 @@ def experiment_result(team0: str, team1: str, rows: list[dict]) -> dict:
     return {"team0": team0, "team1": team1, "matches": matches,
             "goal_difference_mean": cell["goal_difference_mean"], "goal_difference_ci95": cell["goal_difference_ci95"],
             "per_match": per_match(matches)}
+
+
+def both_sides(ports: dict, swapped: dict) -> dict:
+    """Python's goal difference per match over the ports matches (Python team 0) and the
+    ports_swapped ones (Python team 1, its difference negated): its mean and 95 % interval."""
+    python_minus_cpp = ([m["score"][0] - m["score"][1] for m in ports["matches"]]
+                        + [m["score"][1] - m["score"][0] for m in swapped["matches"]])
+    interval = sweep_summary.ci95(python_minus_cpp)
+    return {"matches": len(python_minus_cpp),
+            "python_minus_cpp_mean": sum(python_minus_cpp) / len(python_minus_cpp) if python_minus_cpp else None,
+            "python_minus_cpp_ci95": list(interval) if interval else None}
 
 
 def per_match(matches: list[dict]) -> dict:
@@ -127,6 +142,12 @@ def main() -> int:
         team0, team1 = EXPERIMENTS[name]
         results[name] = experiment_result(team0, team1, [r for r in rows if r["cell"] == cell])
         report(name, team0, team1, results[name])
+    if "ports" in results and "ports_swapped" in results:
+        results["ports_both_sides"] = both = both_sides(results["ports"], results["ports_swapped"])
+        if both["python_minus_cpp_ci95"]:
+            low, high = both["python_minus_cpp_ci95"]
+            print(f"\nports_both_sides: Python minus C++ over {both['matches']} matches, both side arrangements: "
+                  f"{both['python_minus_cpp_mean']:+.2f} goals a match, 95 % interval [{low:+.2f}, {high:+.2f}]")
     args.out.write_text(json.dumps(results, indent=2) + "\n")
     print(f"evaluate_teams: results in {args.out}, the sweep's table in {args.sweep_out}")
     return 0

@@ -11,17 +11,22 @@ feet, the ball wedged) makes the robot step sideways round the ball, away from t
 robot, for SIDESTEP_FRAMES, so the next kick has a clear line. Lining-up steps and sidesteps
 keep off touched sectors (avoid's keepOffTouches): they were most of the pushing fouls left
 once Avoid's walks kept off them.
+
+With `carry`, a ball lined up within CARRY_ANGLE, ahead and near the body's centre line, with
+no robot in the CARRY_CLEAR_* box ahead, is walked into at full speed instead of kicked: each
+step's foot pushes it on (about 1 m) and the walk follows it, with no kick's stop (about 2.2 s
+of the ball lying still under a standing robot). Carrying walks go through avoid's keepClear, as Avoid's do.
 """
 import math
 
 import actioncommand
 import robot
 
-from .avoid import keepOffTouches, obstacles, remember
+from .avoid import keepClear, keepOffTouches, obstacles, remember
 from .ball import BEHIND_BALL_DIST, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, ballRecentlySeen, kickAim
 from .go_to_ball import GoToBall
 from .go_to_pose import TURN_GAIN
-from .robot_limits import clamp
+from .robot_limits import MAX_FORWARD, clamp
 
 FOOT_OFFSET = 50.0                         # mm: each foot's centre left/right of the body centre
 KICK_BALL_X = 130.0                        # mm: ball centre ahead of the body centre to kick (toe 80 + radius 32.5 + gap)
@@ -46,15 +51,23 @@ LINE_UP_MAX_SPEED = 150.0                  # mm/s: small steps, either axis
 LINE_UP_MAX_TURN = 0.5                     # rad/s
 KICK_POWER = 1.0                           # default power of a kick ...
 DRIBBLE_POWER = 1.0                        # ... and of a dribble (about 1 m)
+CARRY_ANGLE = 0.6                          # rad: with carry, the aim this well in line, ...
+CARRY_BALL_X = 400.0                       # mm: ... the ball ahead within this ...
+CARRY_BALL_Y = 80.0                        # mm: ... and this near the body's centre line, ...
+CARRY_CLEAR_X = 600.0                      # mm: ... and no obstacle ahead within this ...
+CARRY_CLEAR_Y = 200.0                      # mm: ... and this either side: walk into the ball at full speed
 
 
 class LineUpAndKick:
-    def __init__(self, goalX=OPPONENT_GOAL_X, goalY=OPPONENT_GOAL_Y, dribble=False, power=None, policy=None):
+    def __init__(self, goalX=OPPONENT_GOAL_X, goalY=OPPONENT_GOAL_Y, dribble=False, power=None, policy=None,
+                 carry=False):
         """goalX, goalY: where to kick (mm); dribble: dribble instead of kicking; power:
-        [0, 1], None for KICK_POWER or DRIBBLE_POWER; policy: GoToBall's (None: GoToPose)."""
+        [0, 1], None for KICK_POWER or DRIBBLE_POWER; policy: GoToBall's (None: GoToPose);
+        carry: walk a clear ball on instead of kicking it."""
         self.goalX = goalX
         self.goalY = goalY
         self.dribble = dribble
+        self.carry = carry
         if power is None:
             power = DRIBBLE_POWER if dribble else KICK_POWER
         self.power = power
@@ -80,7 +93,9 @@ class LineUpAndKick:
         aimError = robot.normaliseTheta(math.atan2(aimY - ball.y, aimX - ball.x) - pos.theta)
         self.seen = remember(self.seen, blackboard)
         nearest, nearestY = CONTEST_DIST, 0.0  # the obstacle nearest the ball within CONTEST_DIST
+        clearAhead = True
         for x, y in obstacles(blackboard, self.seen):
+            clearAhead = clearAhead and not (0.0 < x < CARRY_CLEAR_X and abs(y) < CARRY_CLEAR_Y)
             dist = math.hypot(x - ballRR.x(), y - ballRR.y())
             if dist < nearest:
                 nearest, nearestY = dist, y
@@ -106,6 +121,12 @@ class LineUpAndKick:
         else:
             self.stalledFrames = 0
             self.stallBall = (ball.x, ball.y)
+        if (self.carry and clearAhead and abs(aimError) < CARRY_ANGLE
+                and 0.0 < ballRR.x() < CARRY_BALL_X and abs(ballRR.y()) < CARRY_BALL_Y):
+            left = clamp(LINE_UP_GAIN * ballRR.y(), -LINE_UP_MAX_SPEED, LINE_UP_MAX_SPEED)
+            turn = clamp(TURN_GAIN * aimError, -LINE_UP_MAX_TURN, LINE_UP_MAX_TURN)
+            forward, left = keepClear(blackboard, MAX_FORWARD, left)
+            return actioncommand.compose(body=actioncommand.walk(forward, left, turn))
         body = self.lineUp(ballRR, aimError)
         if body.actionType == robot.ActionType.WALK:
             body.forward, body.left = keepOffTouches(blackboard.motion, body.forward, body.left)

@@ -19,7 +19,7 @@ import math
 import actioncommand
 import robot
 
-from .ball import BEHIND_BALL_DIST, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, pointBehindBall
+from .ball import BEHIND_BALL_DIST, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, kickAim, pointBehindBall
 from .field import distance
 from .goalie import GOALIE_HOME_X
 from .go_to_pose import GoToPose
@@ -67,10 +67,12 @@ def teamBall(playerNumber, messages, utime):
 
 def teamBallTarget(role, ballX, ballY, robotY, supporters):
     """(x, y, theta): where the role stands for the ball at (ballX, ballY): the striker
-    behind it facing the opponent goal, a supporter at its algorithm's target (the numbers of
+    behind it facing the opponent goal (or along the line a ball on it lies on, as GoToBall
+    stands: ball.py's kickAim), a supporter at its algorithm's target (the numbers of
     the SupporterDef `supporters`) facing it."""
     if role == ROLE_STRIKER:
-        return pointBehindBall(robot.AbsCoord(ballX, ballY, 0.0), OPPONENT_GOAL_X, OPPONENT_GOAL_Y, BEHIND_BALL_DIST)
+        aimX, aimY = kickAim(ballX, ballY, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, BEHIND_BALL_DIST)
+        return pointBehindBall(robot.AbsCoord(ballX, ballY, 0.0), aimX, aimY, BEHIND_BALL_DIST)
     if role == ROLE_DEFENDER:
         x, y = defenderTarget(ballX, ballY, supporters)
     else:

@@ -1,5 +1,6 @@
-"""Striker: to the ball, lined up at the opponent goal (LineUpAndKick); kicks, or dribbles
-while the ball is within STRIKER_DRIBBLE_DIST of the opponent goal's centre. The choice is
+"""Striker: to the ball, lined up at the opponent goal (LineUpAndKick); carries a clear ball
+on (LineUpAndKick's carry) or kicks, or dribbles while the ball is within STRIKER_DRIBBLE_DIST
+of the opponent goal's centre. The choice is
 made while neither is lining up and kept through a line-up."""
 import math
 
@@ -16,7 +17,7 @@ def shouldDribble(ballX, ballY):
 class Striker:
     def __init__(self, policy=None):
         """policy: the learned walker's policy file to approach the ball with (None: GoToPose)."""
-        self.kick = LineUpAndKick(OPPONENT_GOAL_X, OPPONENT_GOAL_Y, False, policy=policy)
+        self.kick = LineUpAndKick(OPPONENT_GOAL_X, OPPONENT_GOAL_Y, False, policy=policy, carry=True)
         self.dribble = LineUpAndKick(OPPONENT_GOAL_X, OPPONENT_GOAL_Y, True, policy=policy)
         self.dribbling = False
 

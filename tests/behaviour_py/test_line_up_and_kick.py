@@ -9,6 +9,7 @@ from boards import board, relative, seenRobot
 from skills.ball import BALL_LOST_FRAMES, BEHIND_BALL_DIST
 from skills.field import FIELD_EDGE_SLACK, FIELD_HALF_WIDTH
 from skills.go_to_ball import GoToBall
+from skills.robot_limits import MAX_FORWARD
 from skills.line_up_and_kick import SIDESTEP_FRAMES, STALL_FRAMES, LineUpAndKick
 
 ORIGIN = (0.0, 0.0, 0.0)
@@ -109,6 +110,33 @@ def test_a_contested_ball_that_moves_starts_the_stall_count_again():
 def test_a_robot_the_sonar_finds_at_the_ball_contests_it():
     body = LineUpAndKick().tick(contest_board(sonar=(0.4, 1.0))).body  # 400 mm ahead
     assert body.actionType == KICK
+
+
+def test_with_carry_a_clear_ball_is_walked_on_not_kicked():
+    # The ball in front of the left foot, lined up: a kick without carry, a walk into the
+    # ball with it, steering its 50 mm off the centre line back under the body.
+    assert LineUpAndKick().tick(board(ORIGIN, ball=(130.0, 50.0))).body.actionType == KICK
+    skill = LineUpAndKick(carry=True)
+    body = skill.tick(board(ORIGIN, ball=(130.0, 50.0))).body
+    assert (body.actionType, body.forward) == (WALK, MAX_FORWARD)
+    assert (body.left, body.turn) == pytest.approx((100.0, 2.0 * math.atan2(-50.0, 2870.0)), abs=1e-4)
+    assert skill.liningUp
+
+
+def test_a_robot_ahead_makes_a_carrier_kick():
+    ahead = board(ORIGIN, ball=(130.0, 50.0), robots=[seenRobot(550.0, 150.0)])  # 460 mm beyond the ball
+    assert LineUpAndKick(carry=True).tick(ahead).body.actionType == KICK
+    beside = board(ORIGIN, ball=(130.0, 50.0), robots=[seenRobot(550.0, 250.0)])  # clear of the path
+    assert LineUpAndKick(carry=True).tick(beside).body.actionType == WALK
+
+
+def test_a_carrier_does_not_walk_the_ball_off_the_field():
+    # Lined up 40 mm beyond the touchline, turned 0.1 rad further out: walking straight on
+    # would take it further out; keepClear keeps the walk along the line.
+    pos = (0.0, FIELD_HALF_WIDTH + 40.0, 0.1)
+    body = LineUpAndKick(carry=True).tick(board(pos, ball=relative(pos, 130.0, 0.0))).body
+    assert body.actionType == WALK and body.forward > 0.0
+    assert body.forward * math.sin(pos[2]) + body.left * math.cos(pos[2]) == pytest.approx(0.0, abs=1e-3)
 
 
 def test_ball_too_far_takes_small_steps():

@@ -7,6 +7,8 @@ import pytest
 import robot
 from boards import board, message
 
+from skills.ball import BEHIND_BALL_DIST, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, kickAim, pointBehindBall
+from skills.field import FIELD_EDGE_SLACK, FIELD_HALF_WIDTH
 from skills.search import (HOME_NEAR_DIST, SEARCH_CYCLE_FRAMES, SEARCH_TURN_FRAMES, SEARCH_TURN_LIMIT_FRAMES,
                            SEARCH_TURN_SPEED, Search, searchSpot, teamBall, teamBallTarget)
 from skills.supporter import THESIS
@@ -50,6 +52,17 @@ def test_the_roles_stand_for_the_team_ball_as_for_their_own():
     # Midfielder (Algorithm 4.1): ball beyond 2000 -> (2200, 0), off the shooting path, facing the ball behind.
     x, y, theta = teamBallTarget(ROLE_MIDFIELDER, 2100.0, 0.0, 100.0, THESIS)
     assert (x, y, theta) == pytest.approx((2200.0, 500.0, math.atan2(-500.0, -100.0)))
+
+
+def test_for_a_team_ball_on_a_touchline_the_striker_stands_where_go_to_ball_would():
+    # Facing the goal it would stand 120 mm beyond the line, where no walk takes it; kickAim
+    # turns it along the line, FIELD_EDGE_SLACK out, as GoToBall does for its own ball.
+    ballX, ballY = 1000.0, FIELD_HALF_WIDTH
+    x, y, theta = teamBallTarget(ROLE_STRIKER, ballX, ballY, 0.0, THESIS)
+    assert (x, y, theta) == pointBehindBall(robot.AbsCoord(ballX, ballY, 0.0),
+                                            *kickAim(ballX, ballY, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, BEHIND_BALL_DIST),
+                                            BEHIND_BALL_DIST)
+    assert y == pytest.approx(FIELD_HALF_WIDTH + FIELD_EDGE_SLACK)
 
 
 def test_a_lost_robot_walks_to_the_team_ball_instead_of_turning():

@@ -50,3 +50,19 @@ def test_first_seed_moves_every_experiment_to_another_seed_range():
     matches = evaluate_teams.matches_of(["roles_cpp"], 3, [], [], first_seed=41)
     assert [m["seed"] for m in matches] == [41, 42, 43]
     assert {(m["team0"], m["team1"]) for m in matches} == {("cpp:Team", "cpp:Team,supporters=thesis")}
+
+
+def test_both_sides_counts_pythons_goal_difference_whichever_side_it_played():
+    ports = evaluate_teams.experiment_result("py:Team", "cpp:Team", [row(1, 3, 0), row(2, 1, 1)])
+    swapped = evaluate_teams.experiment_result("cpp:Team", "py:Team", [row(1, 0, 2), row(2, 2, 1)])
+    both = evaluate_teams.both_sides(ports, swapped)
+    assert both["matches"] == 4
+    assert both["python_minus_cpp_mean"] == pytest.approx((3 + 0 + 2 - 1) / 4)
+    lo, hi = both["python_minus_cpp_ci95"]
+    assert lo < 1.0 < hi
+
+
+def test_ports_swapped_plays_the_python_team_as_team_1():
+    matches = evaluate_teams.matches_of(["ports", "ports_swapped"], 2, [], [])
+    assert {(m["cell"], m["team0"], m["team1"]) for m in matches} == {(0, "py:Team", "cpp:Team"),
+                                                                        (1, "cpp:Team", "py:Team")}

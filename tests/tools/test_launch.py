@@ -151,18 +151,19 @@ def test_off_a_terminal_progress_is_a_line_every_tenth_of_the_planned_match():
 
 
 def test_each_goal_adds_its_stoppage_to_the_total_so_a_whole_match_still_ends_at_100_percent():
-    # A striker against a standing robot scores twice (seed 1); READY 2 s and SET 1 s again after each.
+    # A striker against a standing robot scores twice (seed 1, at 0:22 and 0:55); READY 2 s and
+    # SET 1 s again after each.
     result = launch("--team-size", 1, "--team0", "cpp:Striker", "--team1", "cpp:stand", "--no-log",
                     "--set", "rules.initial_s=0", "--set", "rules.ready_s=2", "--set", "rules.set_s=1",
-                    "--set", "rules.half_s=20")
+                    "--set", "rules.half_s=30")
     assert result.returncode == 0, result.stderr
     [goal] = [line for line in result.stdout.splitlines() if line.startswith("Goals: ")]
     assert goal.count(" at ") == 2, goal
     lines = [line for line in result.stdout.splitlines() if " % of the match" in line]
-    assert "of 46 s simulated" in lines[0] and "score 0:0" in lines[0], "before the goals: 2 x (0 + 2 + 1 + 20) s"
-    assert any("of 49 s simulated" in line and "score 1:0" in line for line in lines), result.stdout
-    assert "100 % of the match, 52 of 52 s simulated" in lines[-1], result.stdout
-    assert any(line.startswith("Match: 52 s simulated") for line in result.stdout.splitlines())
+    assert "of 66 s simulated" in lines[0] and "score 0:0" in lines[0], "before the goals: 2 x (0 + 2 + 1 + 30) s"
+    assert any("of 69 s simulated" in line and "score 1:0" in line for line in lines), result.stdout
+    assert "100 % of the match, 72 of 72 s simulated" in lines[-1], result.stdout
+    assert any(line.startswith("Match: 72 s simulated") for line in result.stdout.splitlines())
 
 
 def test_bad_options_are_one_line(tmp_path):

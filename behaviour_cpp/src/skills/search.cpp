@@ -36,8 +36,11 @@ std::optional<FieldPoint> teamBall(int playerNumber, const std::vector<TeamMessa
 }
 
 AbsCoord teamBallTarget(int role, float ballX, float ballY, float robotY, const SupporterDef& supporters) {
-  if (role == ROLE_STRIKER)
-    return pointBehindBall(AbsCoord{ballX, ballY, 0.f}, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, BEHIND_BALL_DIST);
+  if (role == ROLE_STRIKER) {
+    const FieldPointExact aim = kickAim(ballX, ballY, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, BEHIND_BALL_DIST);
+    return pointBehindBall(AbsCoord{ballX, ballY, 0.f}, static_cast<float>(aim.x), static_cast<float>(aim.y),
+                           BEHIND_BALL_DIST);
+  }
   FieldPoint target = role == ROLE_DEFENDER ? defenderTarget(ballX, ballY, supporters)
                                             : midfielderTarget(ballX, ballY, robotY, supporters);
   target = supporterTarget(target.x, target.y, ballX, ballY, robotY);

@@ -11,7 +11,7 @@ bool shouldDribble(float ballX, float ballY) {
 }
 
 Striker::Striker(const std::optional<std::string>& policy)
-    : kick_(OPPONENT_GOAL_X, OPPONENT_GOAL_Y, false, std::nullopt, policy),
+    : kick_(OPPONENT_GOAL_X, OPPONENT_GOAL_Y, false, std::nullopt, policy, true),
       dribble_(OPPONENT_GOAL_X, OPPONENT_GOAL_Y, true, std::nullopt, policy) {}
 
 ActionCommand::All Striker::tick(const Blackboard& blackboard) {

@@ -47,6 +47,12 @@ inline std::pair<float, float> relative(api::AbsCoord pos, float forward, float 
           pos.y + forward * std::sin(pos.theta) + left * std::cos(pos.theta)};
 }
 
+/// A robot the camera saw `forward`, `left` mm from the robot (vision.robots): player
+/// `number`, a teammate or not.
+inline api::SeenObject seenRobot(float forward, float left, int number = 5, bool teammate = false) {
+  return {{std::hypot(forward, left), std::atan2(left, forward)}, number, teammate};
+}
+
 inline float radians(float degrees) { return degrees * api::kPi / 180.f; }
 
 } // namespace touchline::behaviour::test

@@ -15,6 +15,7 @@
 using namespace touchline::api;
 using namespace touchline::behaviour::skills;
 using touchline::behaviour::test::board;
+using touchline::behaviour::test::seenRobot;
 using touchline::behaviour::test::teamBoard;
 
 namespace {
@@ -30,10 +31,6 @@ float passing(WalkVelocity v, float x, float y) {
 TeamMessage poseMessage(int number, int x, int y, bool penalised = false, int64_t age = 0) {
   const TeamInfo info{number, ROLE_DEFENDER, false, penalised, false, NO_BALL_DISTANCE, 0, 0, x, y};
   return {number, NOW - age, encodeMessage(info)};
-}
-
-SeenObject seenRobot(float forward, float left, int number = 5, bool teammate = false) {
-  return {{std::hypot(forward, left), std::atan2(left, forward)}, number, teammate};
 }
 
 /// A board at `pos` with the sonar readings (left, right) at range 1000 mm.

@@ -9,11 +9,13 @@
 #include "boards.hpp"
 #include "touchline/behaviour/skills/ball.hpp"
 #include "touchline/behaviour/skills/field.hpp"
+#include "touchline/behaviour/skills/robot_limits.hpp"
 
 using namespace touchline::api;
 using namespace touchline::behaviour::skills;
 using touchline::behaviour::test::board;
 using touchline::behaviour::test::relative;
+using touchline::behaviour::test::seenRobot;
 using ActionCommand::ActionType;
 using ActionCommand::Foot;
 
@@ -100,10 +102,6 @@ Blackboard contestBoard() {
   return board(pos, x, y);
 }
 
-SeenObject seenRobot(float forward, float left) {
-  return {{std::hypot(forward, left), std::atan2(left, forward)}, 5, false};
-}
-
 } // namespace
 
 TEST(LineUpAndKickSkill, AContestedBallIsKickedAtOnceWhereverItGainsGround) {
@@ -152,6 +150,41 @@ TEST(LineUpAndKickSkill, ARobotTheSonarFindsAtTheBallContestsIt) {
   Blackboard blackboard = contestBoard();
   blackboard.motion.sonarLeft = 0.4f; // 400 mm ahead
   EXPECT_EQ(LineUpAndKick().tick(blackboard).body.actionType, ActionType::KICK);
+}
+
+TEST(LineUpAndKickSkill, WithCarryAClearBallIsWalkedOnNotKicked) {
+  // The ball in front of the left foot, lined up: a kick without carry, a walk into the
+  // ball with it, steering its 50 mm off the centre line back under the body.
+  EXPECT_EQ(LineUpAndKick().tick(ballAt(130.f, 50.f)).body.actionType, ActionType::KICK);
+  LineUpAndKick skill(OPPONENT_GOAL_X, OPPONENT_GOAL_Y, false, std::nullopt, std::nullopt, true);
+  const auto command = skill.tick(ballAt(130.f, 50.f));
+  EXPECT_EQ(command.body.actionType, ActionType::WALK);
+  EXPECT_EQ(command.body.forward, MAX_FORWARD);
+  expectVelocities(command, MAX_FORWARD, 100.f, 2.f * std::atan2(-50.f, 2870.f));
+  EXPECT_TRUE(skill.liningUp());
+}
+
+namespace {
+LineUpAndKick carrier() { return LineUpAndKick(OPPONENT_GOAL_X, OPPONENT_GOAL_Y, false, std::nullopt, std::nullopt, true); }
+} // namespace
+
+TEST(LineUpAndKickSkill, ARobotAheadMakesACarrierKick) {
+  Blackboard blackboard = ballAt(130.f, 50.f);
+  blackboard.vision.robots = {seenRobot(550.f, 150.f)}; // 460 mm beyond the ball
+  EXPECT_EQ(carrier().tick(blackboard).body.actionType, ActionType::KICK);
+  blackboard.vision.robots = {seenRobot(550.f, 250.f)}; // clear of the path
+  EXPECT_EQ(carrier().tick(blackboard).body.actionType, ActionType::WALK);
+}
+
+TEST(LineUpAndKickSkill, ACarrierDoesNotWalkTheBallOffTheField) {
+  // Lined up 40 mm beyond the touchline, turned 0.1 rad further out: walking straight on
+  // would take it further out; keepClear keeps the walk along the line.
+  const AbsCoord pos{0.f, FIELD_HALF_WIDTH + 40.f, 0.1f};
+  const auto [x, y] = relative(pos, 130.f, 0.f);
+  const auto body = carrier().tick(board(pos, x, y)).body;
+  EXPECT_EQ(body.actionType, ActionType::WALK);
+  EXPECT_GT(body.forward, 0.f);
+  EXPECT_NEAR(body.forward * std::sin(pos.theta) + body.left * std::cos(pos.theta), 0.f, 1e-3f);
 }
 
 TEST(LineUpAndKickSkill, BallTooFarTakesSmallSteps) {

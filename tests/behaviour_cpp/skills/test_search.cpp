@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include "boards.hpp"
+#include "touchline/behaviour/skills/ball.hpp"
+#include "touchline/behaviour/skills/field.hpp"
 #include "touchline/behaviour/skills/team.hpp"
 #include "touchline/behaviour/skills/team_comm.hpp"
 
@@ -65,6 +67,20 @@ TEST(Search, TheRolesStandForTheTeamBallAsForTheirOwn) {
   expectPose(teamBallTarget(ROLE_STRIKER, 1000.f, 0.f, 0.f, thesisSupporters()), 800.f, 0.f, 0.f);
   expectPose(teamBallTarget(ROLE_DEFENDER, 0.f, 600.f, 0.f, thesisSupporters()), -1250.f, 350.f, std::atan2(250.f, 1250.f));
   expectPose(teamBallTarget(ROLE_MIDFIELDER, 2100.f, 0.f, 100.f, thesisSupporters()), 2200.f, 500.f, std::atan2(-500.f, -100.f));
+}
+
+TEST(Search, ForATeamBallOnATouchlineTheStrikerStandsWhereGoToBallWould) {
+  // Facing the goal it would stand 120 mm beyond the line, where no walk takes it; kickAim
+  // turns it along the line, FIELD_EDGE_SLACK out, as GoToBall does for its own ball.
+  const float ballX = 1000.f, ballY = FIELD_HALF_WIDTH;
+  const FieldPointExact aim = kickAim(ballX, ballY, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, BEHIND_BALL_DIST);
+  const AbsCoord expected = pointBehindBall(AbsCoord{ballX, ballY, 0.f}, static_cast<float>(aim.x),
+                                            static_cast<float>(aim.y), BEHIND_BALL_DIST);
+  const AbsCoord target = teamBallTarget(ROLE_STRIKER, ballX, ballY, 0.f, thesisSupporters());
+  EXPECT_EQ(target.x, expected.x);
+  EXPECT_EQ(target.y, expected.y);
+  EXPECT_EQ(target.theta, expected.theta);
+  EXPECT_NEAR(target.y, FIELD_HALF_WIDTH + FIELD_EDGE_SLACK, 1e-2f);
 }
 
 TEST(Search, ALostRobotWalksToTheTeamBallInsteadOfTurning) {

@@ -6,10 +6,12 @@
 #include <gtest/gtest.h>
 
 #include "boards.hpp"
+#include "touchline/behaviour/skills/robot_limits.hpp"
 
 using namespace touchline::api;
 using namespace touchline::behaviour::skills;
 using touchline::behaviour::test::board;
+using touchline::behaviour::test::seenRobot;
 using touchline::behaviour::test::teamBoard;
 
 namespace {
@@ -106,8 +108,13 @@ TEST(TeamGoalie, GuardsThenClearsABallNearItsBox) {
 }
 
 // Striker
-TEST(TeamStriker, KicksFarFromGoalAndDribblesNearIt) {
-  EXPECT_EQ(Striker().tick(board({0.f, 0.f, 0.f}, 130.f, 50.f)).body.actionType, AT::KICK);
+TEST(TeamStriker, CarriesAClearBallKicksWhenARobotIsAheadAndDribblesNearTheGoal) {
+  const auto body = Striker().tick(board({0.f, 0.f, 0.f}, 130.f, 50.f)).body;
+  EXPECT_EQ(body.actionType, AT::WALK);
+  EXPECT_EQ(body.forward, MAX_FORWARD);
+  Blackboard ahead = board({0.f, 0.f, 0.f}, 130.f, 50.f);
+  ahead.vision.robots = {seenRobot(550.f, 150.f)};
+  EXPECT_EQ(Striker().tick(ahead).body.actionType, AT::KICK);
   EXPECT_EQ(Striker().tick(board({2300.f, 0.f, 0.f}, 2430.f, 50.f)).body.actionType, AT::DRIBBLE);
 }
 
@@ -198,11 +205,13 @@ TEST(TeamBehaviour, ReadyWalksToTheFormation) {
   EXPECT_EQ(command.body.turn, 0.f);
 }
 
-TEST(TeamBehaviour, TheKickerOfAKickOffKicksAsPlayBegins) {
-  // At its kick-off spot, the ball on the centre mark: a kick at once, where the striker of
-  // the other team, outside the circle, walks to the ball.
+TEST(TeamBehaviour, TheKickerOfAKickOffPlaysTheBallAsPlayBegins) {
+  // At its kick-off spot, the ball on the centre mark: it walks the ball on at once (the
+  // opponents are outside the circle), where the striker of the other team walks to the ball.
   const AbsCoord spot{-150.f, -50.f, 0.f};
-  EXPECT_EQ(Team().tick(teamBoard(spot, 0.f, 0.f)).body.actionType, AT::KICK);
+  const auto kicker = Team().tick(teamBoard(spot, 0.f, 0.f)).body;
+  EXPECT_EQ(kicker.actionType, AT::WALK);
+  EXPECT_EQ(kicker.forward, MAX_FORWARD);
   Blackboard ready = teamBoard(spot, 1000.f, 0.f, true, 0, GameState::READY, 2);
   EXPECT_EQ(Team().tick(ready).body.actionType, AT::STAND); // arrived: it stays there
   ready.gameController.kickOffTeam = 1;                     // the other team kicks off: out of the circle
@@ -237,8 +246,9 @@ TEST(TeamBehaviour, SendsAMessageEverySixthFrame) {
 TEST(TeamBehaviour, PlayingTakesTheAssignedRole) {
   Team striker;
   const auto command = striker.tick(teamBoard({100.f, -200.f, 0.f}, 230.f, -150.f, true, 0, GameState::PLAYING, 3));
-  EXPECT_EQ(striker.role(), ROLE_STRIKER);
-  EXPECT_EQ(command.body.actionType, AT::KICK);
+  EXPECT_EQ(striker.role(), ROLE_STRIKER); // alone: striker, carries
+  EXPECT_EQ(command.body.actionType, AT::WALK);
+  EXPECT_EQ(command.body.forward, MAX_FORWARD);
   EXPECT_EQ(decodeMessage(command.teamMessage),
             (TeamInfo{3, ROLE_STRIKER, true, false, false, 139, 230, -150, 100, -200}));
   Team defender;

@@ -9,8 +9,12 @@
 // into an opponent's feet, the ball wedged) makes the robot step sideways round the ball, away
 // from the nearest robot, for SIDESTEP_FRAMES, so the next kick has a clear line. Lining-up
 // steps and sidesteps keep off touched sectors (avoid's keepOffTouches): they were most of the
-// pushing fouls left once Avoid's walks kept off them. The port of
-// behaviour_py/skills/line_up_and_kick.py.
+// pushing fouls left once Avoid's walks kept off them.
+// With `carry`, a ball lined up within CARRY_ANGLE, ahead and near the body's centre line,
+// with no robot in the CARRY_CLEAR_* box ahead, is walked into at full speed instead of
+// kicked: each step's foot pushes it on (about 1 m) and the walk follows it, with no kick's
+// stop (about 2.2 s of the ball lying still under a standing robot). Carrying walks go through avoid's keepClear, as
+// Avoid's do. The port of behaviour_py/skills/line_up_and_kick.py.
 #include <optional>
 #include <string>
 
@@ -45,14 +49,20 @@ inline constexpr float LINE_UP_MAX_SPEED = 150.f;    ///< mm/s: small steps, eit
 inline constexpr float LINE_UP_MAX_TURN = 0.5f;      ///< rad/s
 inline constexpr float KICK_POWER = 1.f;             ///< default power of a kick ...
 inline constexpr float DRIBBLE_POWER = 1.0f;         ///< ... and of a dribble (about 1 m)
+inline constexpr float CARRY_ANGLE = 0.6f;           ///< rad: with carry, the aim this well in line, ...
+inline constexpr float CARRY_BALL_X = 400.f;         ///< mm: ... the ball ahead within this ...
+inline constexpr float CARRY_BALL_Y = 80.f;          ///< mm: ... and this near the body's centre line, ...
+inline constexpr float CARRY_CLEAR_X = 600.f;        ///< mm: ... and no obstacle ahead within this ...
+inline constexpr float CARRY_CLEAR_Y = 200.f;        ///< mm: ... and this either side: walk into the ball at full speed
 
 class LineUpAndKick : public api::Behaviour {
  public:
   /// goalX, goalY: where to kick (mm); dribble: dribble instead of kicking; power: [0, 1],
-  /// nullopt for KICK_POWER or DRIBBLE_POWER; policy: GoToBall's (nullopt: GoToPose).
+  /// nullopt for KICK_POWER or DRIBBLE_POWER; policy: GoToBall's (nullopt: GoToPose);
+  /// carry: walk a clear ball on instead of kicking it.
   explicit LineUpAndKick(float goalX = OPPONENT_GOAL_X, float goalY = OPPONENT_GOAL_Y, bool dribble = false,
                          std::optional<float> power = std::nullopt,
-                         const std::optional<std::string>& policy = std::nullopt);
+                         const std::optional<std::string>& policy = std::nullopt, bool carry = false);
   api::ActionCommand::All tick(const api::Blackboard& blackboard) override;
 
   bool liningUp() const { return liningUp_; }
@@ -70,6 +80,7 @@ class LineUpAndKick : public api::Behaviour {
   float goalX_, goalY_;
   bool dribble_;
   float power_;
+  bool carry_;
   GoToBall goToBall_;
   bool liningUp_ = false;
   api::ActionCommand::Foot foot_ = api::ActionCommand::Foot::LEFT;
