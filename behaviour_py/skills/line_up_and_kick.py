@@ -14,8 +14,10 @@ once Avoid's walks kept off them.
 
 With `carry`, a ball lined up within CARRY_ANGLE, ahead and near the body's centre line, with
 no robot in the CARRY_CLEAR_* box ahead, is walked into at full speed instead of kicked: each
-step's foot pushes it on (about 1 m) and the walk follows it, with no kick's stop (about 2.2 s
-of the ball lying still under a standing robot). Carrying walks go through avoid's keepClear, as Avoid's do.
+step's foot pushes it on (about 1 m) and the walk follows it, turning towards the aim, with no
+kick's stop (about 2.2 s of the ball lying still under a standing robot). A carrier starts
+lining up with the aim up to CARRY_ANGLE off, where the ball still gains ground, rather than
+walking round the ball first. Carrying walks go through avoid's keepClear, as Avoid's do.
 """
 import math
 
@@ -51,7 +53,7 @@ LINE_UP_MAX_SPEED = 150.0                  # mm/s: small steps, either axis
 LINE_UP_MAX_TURN = 0.5                     # rad/s
 KICK_POWER = 1.0                           # default power of a kick ...
 DRIBBLE_POWER = 1.0                        # ... and of a dribble (about 1 m)
-CARRY_ANGLE = 0.6                          # rad: with carry, the aim this well in line, ...
+CARRY_ANGLE = 1.2                          # rad: with carry, the aim this well in line (lining up starts so too), ...
 CARRY_BALL_X = 400.0                       # mm: ... the ball ahead within this ...
 CARRY_BALL_Y = 80.0                        # mm: ... and this near the body's centre line, ...
 CARRY_CLEAR_X = 600.0                      # mm: ... and no obstacle ahead within this ...
@@ -138,7 +140,8 @@ class LineUpAndKick:
                              and abs(aimError) < max(LINE_UP_LEAVE_ANGLE, self.aimTolerance))
             return
         self.liningUp = (ballRR.distance < LINE_UP_ENTER_DIST and abs(ballRR.heading) < LINE_UP_ENTER_ANGLE
-                         and abs(aimError) < max(LINE_UP_ENTER_ANGLE, self.aimTolerance))
+                         and abs(aimError) < max(LINE_UP_ENTER_ANGLE, self.aimTolerance,
+                                                 CARRY_ANGLE if self.carry else 0.0))
         if self.liningUp:
             self.foot = robot.Foot.LEFT if ballRR.y() >= 0.0 else robot.Foot.RIGHT
 

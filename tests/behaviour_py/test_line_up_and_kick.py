@@ -123,6 +123,17 @@ def test_with_carry_a_clear_ball_is_walked_on_not_kicked():
     assert skill.liningUp
 
 
+def test_a_carrier_walks_a_ball_on_from_an_aim_a_kicker_would_walk_round_to():
+    pos = (0.0, 0.0, 1.0)  # the goal 1.04 rad to the right of the ball ahead
+    ball = relative(pos, 130.0, 0.0)
+    kicker = LineUpAndKick()
+    assert kicker.tick(board(pos, ball=ball)).body.forward < MAX_FORWARD and not kicker.liningUp
+    carrier = LineUpAndKick(carry=True)
+    body = carrier.tick(board(pos, ball=ball)).body
+    assert (body.actionType, body.forward, body.turn) == (WALK, MAX_FORWARD, pytest.approx(-0.5))
+    assert carrier.liningUp
+
+
 def test_a_robot_ahead_makes_a_carrier_kick():
     ahead = board(ORIGIN, ball=(130.0, 50.0), robots=[seenRobot(550.0, 150.0)])  # 460 mm beyond the ball
     assert LineUpAndKick(carry=True).tick(ahead).body.actionType == KICK

@@ -90,7 +90,7 @@ void LineUpAndKick::updateLiningUp(const RRCoord& ballRR, float aimError) {
     return;
   }
   liningUp_ = ballRR.distance < LINE_UP_ENTER_DIST && std::fabs(ballRR.heading) < LINE_UP_ENTER_ANGLE &&
-              std::fabs(aimError) < std::max(LINE_UP_ENTER_ANGLE, aimTolerance_);
+              std::fabs(aimError) < std::max({LINE_UP_ENTER_ANGLE, aimTolerance_, carry_ ? CARRY_ANGLE : 0.f});
   if (liningUp_) foot_ = ballRR.y() >= 0.f ? ActionCommand::Foot::LEFT : ActionCommand::Foot::RIGHT;
 }
 

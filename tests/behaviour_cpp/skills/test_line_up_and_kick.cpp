@@ -168,6 +168,20 @@ namespace {
 LineUpAndKick carrier() { return LineUpAndKick(OPPONENT_GOAL_X, OPPONENT_GOAL_Y, false, std::nullopt, std::nullopt, true); }
 } // namespace
 
+TEST(LineUpAndKickSkill, ACarrierWalksABallOnFromAnAimAKickerWouldWalkRoundTo) {
+  const AbsCoord pos{0.f, 0.f, 1.f}; // the goal 1.04 rad to the right of the ball ahead
+  const auto [x, y] = relative(pos, 130.f, 0.f);
+  LineUpAndKick kicker;
+  EXPECT_LT(kicker.tick(board(pos, x, y)).body.forward, MAX_FORWARD);
+  EXPECT_FALSE(kicker.liningUp());
+  LineUpAndKick carrying = carrier();
+  const auto body = carrying.tick(board(pos, x, y)).body;
+  EXPECT_EQ(body.actionType, ActionType::WALK);
+  EXPECT_EQ(body.forward, MAX_FORWARD);
+  EXPECT_NEAR(body.turn, -0.5f, 1e-5f);
+  EXPECT_TRUE(carrying.liningUp());
+}
+
 TEST(LineUpAndKickSkill, ARobotAheadMakesACarrierKick) {
   Blackboard blackboard = ballAt(130.f, 50.f);
   blackboard.vision.robots = {seenRobot(550.f, 150.f)}; // 460 mm beyond the ball

@@ -12,8 +12,10 @@
 // pushing fouls left once Avoid's walks kept off them.
 // With `carry`, a ball lined up within CARRY_ANGLE, ahead and near the body's centre line,
 // with no robot in the CARRY_CLEAR_* box ahead, is walked into at full speed instead of
-// kicked: each step's foot pushes it on (about 1 m) and the walk follows it, with no kick's
-// stop (about 2.2 s of the ball lying still under a standing robot). Carrying walks go through avoid's keepClear, as
+// kicked: each step's foot pushes it on (about 1 m) and the walk follows it, turning towards
+// the aim, with no kick's stop (about 2.2 s of the ball lying still under a standing robot). A
+// carrier starts lining up with the aim up to CARRY_ANGLE off, where the ball still gains
+// ground, rather than walking round the ball first. Carrying walks go through avoid's keepClear, as
 // Avoid's do. The port of behaviour_py/skills/line_up_and_kick.py.
 #include <optional>
 #include <string>
@@ -49,7 +51,7 @@ inline constexpr float LINE_UP_MAX_SPEED = 150.f;    ///< mm/s: small steps, eit
 inline constexpr float LINE_UP_MAX_TURN = 0.5f;      ///< rad/s
 inline constexpr float KICK_POWER = 1.f;             ///< default power of a kick ...
 inline constexpr float DRIBBLE_POWER = 1.0f;         ///< ... and of a dribble (about 1 m)
-inline constexpr float CARRY_ANGLE = 0.6f;           ///< rad: with carry, the aim this well in line, ...
+inline constexpr float CARRY_ANGLE = 1.2f;           ///< rad: with carry, the aim this well in line (lining up starts so too), ...
 inline constexpr float CARRY_BALL_X = 400.f;         ///< mm: ... the ball ahead within this ...
 inline constexpr float CARRY_BALL_Y = 80.f;          ///< mm: ... and this near the body's centre line, ...
 inline constexpr float CARRY_CLEAR_X = 600.f;        ///< mm: ... and no obstacle ahead within this ...
