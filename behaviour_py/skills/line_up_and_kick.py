@@ -13,9 +13,9 @@ keep off touched sectors (avoid's keepOffTouches): they were most of the pushing
 once Avoid's walks kept off them.
 
 With `carry`, a ball lined up within CARRY_ANGLE, ahead and near the body's centre line, with
-no robot in the CARRY_CLEAR_* box ahead, is walked into at full speed instead of kicked: each
-step's foot pushes it on (about 1 m) and the walk follows it, turning towards the aim, with no
-kick's stop (about 2.2 s of the ball lying still under a standing robot). A carrier starts
+no robot in the CARRY_CLEAR_* box ahead, is walked into at CARRY_SPEED instead of kicked: the
+feet push it on and the walk follows it, turning towards the aim, with no kick's stop (about
+2.2 s of the ball lying still under a standing robot). A carrier starts
 lining up with the aim up to CARRY_ANGLE off, where the ball still gains ground, rather than
 walking round the ball first. Carrying walks go through avoid's keepClear, as Avoid's do.
 """
@@ -28,7 +28,7 @@ from .avoid import keepClear, keepOffTouches, obstacles, remember
 from .ball import BEHIND_BALL_DIST, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, ballRecentlySeen, kickAim
 from .go_to_ball import GoToBall
 from .go_to_pose import TURN_GAIN
-from .robot_limits import MAX_FORWARD, clamp
+from .robot_limits import clamp
 
 FOOT_OFFSET = 50.0                         # mm: each foot's centre left/right of the body centre
 KICK_BALL_X = 130.0                        # mm: ball centre ahead of the body centre to kick (toe 80 + radius 32.5 + gap)
@@ -57,7 +57,8 @@ CARRY_ANGLE = 1.2                          # rad: with carry, the aim this well 
 CARRY_BALL_X = 400.0                       # mm: ... the ball ahead within this ...
 CARRY_BALL_Y = 80.0                        # mm: ... and this near the body's centre line, ...
 CARRY_CLEAR_X = 600.0                      # mm: ... and no obstacle ahead within this ...
-CARRY_CLEAR_Y = 200.0                      # mm: ... and this either side: walk into the ball at full speed
+CARRY_CLEAR_Y = 200.0                      # mm: ... and this either side: ...
+CARRY_SPEED = 180.0                        # mm/s: ... walk into the ball at this (at full speed the feet strike it away)
 
 
 class LineUpAndKick:
@@ -127,7 +128,7 @@ class LineUpAndKick:
                 and 0.0 < ballRR.x() < CARRY_BALL_X and abs(ballRR.y()) < CARRY_BALL_Y):
             left = clamp(LINE_UP_GAIN * ballRR.y(), -LINE_UP_MAX_SPEED, LINE_UP_MAX_SPEED)
             turn = clamp(TURN_GAIN * aimError, -LINE_UP_MAX_TURN, LINE_UP_MAX_TURN)
-            forward, left = keepClear(blackboard, MAX_FORWARD, left)
+            forward, left = keepClear(blackboard, CARRY_SPEED, left)
             return actioncommand.compose(body=actioncommand.walk(forward, left, turn))
         body = self.lineUp(ballRR, aimError)
         if body.actionType == robot.ActionType.WALK:

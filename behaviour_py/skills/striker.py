@@ -1,7 +1,7 @@
 """Striker: to the ball, lined up at the opponent goal (LineUpAndKick); carries a clear ball
 on (LineUpAndKick's carry) or kicks, or dribbles while the ball is within STRIKER_DRIBBLE_DIST
-of the opponent goal's centre. The choice is
-made while neither is lining up and kept through a line-up."""
+of the opponent goal's centre. The choice is made while neither is lining up and kept
+through a line-up."""
 import math
 
 from .ball import OPPONENT_GOAL_X, OPPONENT_GOAL_Y, ballRecentlySeen

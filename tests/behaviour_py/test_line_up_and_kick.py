@@ -9,8 +9,7 @@ from boards import board, relative, seenRobot
 from skills.ball import BALL_LOST_FRAMES, BEHIND_BALL_DIST
 from skills.field import FIELD_EDGE_SLACK, FIELD_HALF_WIDTH
 from skills.go_to_ball import GoToBall
-from skills.robot_limits import MAX_FORWARD
-from skills.line_up_and_kick import SIDESTEP_FRAMES, STALL_FRAMES, LineUpAndKick
+from skills.line_up_and_kick import CARRY_SPEED, SIDESTEP_FRAMES, STALL_FRAMES, LineUpAndKick
 
 ORIGIN = (0.0, 0.0, 0.0)
 KICK = robot.ActionType.KICK
@@ -118,7 +117,7 @@ def test_with_carry_a_clear_ball_is_walked_on_not_kicked():
     assert LineUpAndKick().tick(board(ORIGIN, ball=(130.0, 50.0))).body.actionType == KICK
     skill = LineUpAndKick(carry=True)
     body = skill.tick(board(ORIGIN, ball=(130.0, 50.0))).body
-    assert (body.actionType, body.forward) == (WALK, MAX_FORWARD)
+    assert (body.actionType, body.forward) == (WALK, CARRY_SPEED)
     assert (body.left, body.turn) == pytest.approx((100.0, 2.0 * math.atan2(-50.0, 2870.0)), abs=1e-4)
     assert skill.liningUp
 
@@ -127,10 +126,10 @@ def test_a_carrier_walks_a_ball_on_from_an_aim_a_kicker_would_walk_round_to():
     pos = (0.0, 0.0, 1.0)  # the goal 1.04 rad to the right of the ball ahead
     ball = relative(pos, 130.0, 0.0)
     kicker = LineUpAndKick()
-    assert kicker.tick(board(pos, ball=ball)).body.forward < MAX_FORWARD and not kicker.liningUp
+    assert kicker.tick(board(pos, ball=ball)).body.forward < CARRY_SPEED and not kicker.liningUp
     carrier = LineUpAndKick(carry=True)
     body = carrier.tick(board(pos, ball=ball)).body
-    assert (body.actionType, body.forward, body.turn) == (WALK, MAX_FORWARD, pytest.approx(-0.5))
+    assert (body.actionType, body.forward, body.turn) == (WALK, CARRY_SPEED, pytest.approx(-0.5))
     assert carrier.liningUp
 
 

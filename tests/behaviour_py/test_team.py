@@ -7,7 +7,7 @@ from boards import board, message, seenRobot
 
 from skills.field import clampOutOfOwnBox
 from skills.goalie import Goalie, goalieTarget
-from skills.robot_limits import MAX_FORWARD
+from skills.line_up_and_kick import CARRY_SPEED
 from skills.striker import Striker
 from skills.supporter import THESIS, Defender, Midfielder, defenderTarget, midfielderTarget, supporterTarget
 from skills.search import SEARCH_CYCLE_FRAMES, SEARCH_TURN_FRAMES, SEARCH_TURN_LIMIT_FRAMES, SEARCH_TURN_SPEED
@@ -110,7 +110,7 @@ def test_goalie_guards_then_clears_a_ball_near_its_box():
 # Striker
 def test_striker_carries_a_clear_ball_kicks_when_a_robot_is_ahead_and_dribbles_near_the_goal():
     body = Striker().tick(board((0.0, 0.0, 0.0), ball=(130.0, 50.0))).body
-    assert (body.actionType, body.forward) == (WALK, MAX_FORWARD)
+    assert (body.actionType, body.forward) == (WALK, CARRY_SPEED)
     ahead = board((0.0, 0.0, 0.0), ball=(130.0, 50.0), robots=[seenRobot(550.0, 150.0)])
     assert Striker().tick(ahead).body.actionType == KICK
     assert Striker().tick(board((2300.0, 0.0, 0.0), ball=(2430.0, 50.0))).body.actionType == robot.ActionType.DRIBBLE
@@ -193,7 +193,7 @@ def test_the_kicker_of_a_kick_off_plays_the_ball_as_play_begins():
     # At its kick-off spot, the ball on the centre mark: it walks the ball on at once (the
     # opponents are outside the circle), where the striker of the other team walks to the ball.
     kicker = Team().tick(board((-150.0, -50.0, 0.0), ball=(0.0, 0.0), player=2, kickOffTeam=0))
-    assert (kicker.body.actionType, kicker.body.forward) == (WALK, MAX_FORWARD)
+    assert (kicker.body.actionType, kicker.body.forward) == (WALK, CARRY_SPEED)
     command = Team().tick(board((-150.0, -50.0, 0.0), state=GS.READY, player=2, kickOffTeam=0))
     assert command.body.actionType == STAND  # arrived: it stays there
     command = Team().tick(board((-150.0, -50.0, 0.0), state=GS.READY, player=2, kickOffTeam=1))
@@ -224,7 +224,7 @@ def test_sends_a_message_every_sixth_frame():
 def test_playing_takes_the_assigned_role():
     team = Team()
     command = team.tick(board((100.0, -200.0, 0.0), ball=(230.0, -150.0), player=3))  # alone: striker, carries
-    assert team.role == ROLE_STRIKER and (command.body.actionType, command.body.forward) == (WALK, MAX_FORWARD)
+    assert team.role == ROLE_STRIKER and (command.body.actionType, command.body.forward) == (WALK, CARRY_SPEED)
     assert decodeMessage(command.teamMessage) == TeamInfo(3, ROLE_STRIKER, True, False, False, 139, 230, -150, 100,
                                                           -200)
     team = Team()

@@ -151,7 +151,7 @@ def test_off_a_terminal_progress_is_a_line_every_tenth_of_the_planned_match():
 
 
 def test_each_goal_adds_its_stoppage_to_the_total_so_a_whole_match_still_ends_at_100_percent():
-    # A striker against a standing robot scores twice (seed 1, at 0:22 and 0:55); READY 2 s and
+    # A striker against a standing robot scores twice (seed 1, at 0:28 and 1:04); READY 2 s and
     # SET 1 s again after each.
     result = launch("--team-size", 1, "--team0", "cpp:Striker", "--team1", "cpp:stand", "--no-log",
                     "--set", "rules.initial_s=0", "--set", "rules.ready_s=2", "--set", "rules.set_s=1",

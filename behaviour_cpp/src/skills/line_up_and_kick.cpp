@@ -71,7 +71,7 @@ ActionCommand::All LineUpAndKick::tick(const Blackboard& blackboard) {
       std::fabs(ballRR.y()) < CARRY_BALL_Y) {
     const float left = clamp(LINE_UP_GAIN * ballRR.y(), -LINE_UP_MAX_SPEED, LINE_UP_MAX_SPEED);
     const float turn = clamp(TURN_GAIN * aimError, -LINE_UP_MAX_TURN, LINE_UP_MAX_TURN);
-    const WalkVelocity v = keepClear(blackboard, MAX_FORWARD, left);
+    const WalkVelocity v = keepClear(blackboard, CARRY_SPEED, left);
     return actioncommand::compose({}, actioncommand::walk(v.forward, v.left, turn));
   }
   ActionCommand::Body body = lineUp(ballRR, aimError);

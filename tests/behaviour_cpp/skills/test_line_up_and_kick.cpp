@@ -9,7 +9,6 @@
 #include "boards.hpp"
 #include "touchline/behaviour/skills/ball.hpp"
 #include "touchline/behaviour/skills/field.hpp"
-#include "touchline/behaviour/skills/robot_limits.hpp"
 
 using namespace touchline::api;
 using namespace touchline::behaviour::skills;
@@ -159,8 +158,8 @@ TEST(LineUpAndKickSkill, WithCarryAClearBallIsWalkedOnNotKicked) {
   LineUpAndKick skill(OPPONENT_GOAL_X, OPPONENT_GOAL_Y, false, std::nullopt, std::nullopt, true);
   const auto command = skill.tick(ballAt(130.f, 50.f));
   EXPECT_EQ(command.body.actionType, ActionType::WALK);
-  EXPECT_EQ(command.body.forward, MAX_FORWARD);
-  expectVelocities(command, MAX_FORWARD, 100.f, 2.f * std::atan2(-50.f, 2870.f));
+  EXPECT_EQ(command.body.forward, CARRY_SPEED);
+  expectVelocities(command, CARRY_SPEED, 100.f, 2.f * std::atan2(-50.f, 2870.f));
   EXPECT_TRUE(skill.liningUp());
 }
 
@@ -172,12 +171,12 @@ TEST(LineUpAndKickSkill, ACarrierWalksABallOnFromAnAimAKickerWouldWalkRoundTo) {
   const AbsCoord pos{0.f, 0.f, 1.f}; // the goal 1.04 rad to the right of the ball ahead
   const auto [x, y] = relative(pos, 130.f, 0.f);
   LineUpAndKick kicker;
-  EXPECT_LT(kicker.tick(board(pos, x, y)).body.forward, MAX_FORWARD);
+  EXPECT_LT(kicker.tick(board(pos, x, y)).body.forward, CARRY_SPEED);
   EXPECT_FALSE(kicker.liningUp());
   LineUpAndKick carrying = carrier();
   const auto body = carrying.tick(board(pos, x, y)).body;
   EXPECT_EQ(body.actionType, ActionType::WALK);
-  EXPECT_EQ(body.forward, MAX_FORWARD);
+  EXPECT_EQ(body.forward, CARRY_SPEED);
   EXPECT_NEAR(body.turn, -0.5f, 1e-5f);
   EXPECT_TRUE(carrying.liningUp());
 }

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "boards.hpp"
-#include "touchline/behaviour/skills/robot_limits.hpp"
+#include "touchline/behaviour/skills/line_up_and_kick.hpp"
 
 using namespace touchline::api;
 using namespace touchline::behaviour::skills;
@@ -111,7 +111,7 @@ TEST(TeamGoalie, GuardsThenClearsABallNearItsBox) {
 TEST(TeamStriker, CarriesAClearBallKicksWhenARobotIsAheadAndDribblesNearTheGoal) {
   const auto body = Striker().tick(board({0.f, 0.f, 0.f}, 130.f, 50.f)).body;
   EXPECT_EQ(body.actionType, AT::WALK);
-  EXPECT_EQ(body.forward, MAX_FORWARD);
+  EXPECT_EQ(body.forward, CARRY_SPEED);
   Blackboard ahead = board({0.f, 0.f, 0.f}, 130.f, 50.f);
   ahead.vision.robots = {seenRobot(550.f, 150.f)};
   EXPECT_EQ(Striker().tick(ahead).body.actionType, AT::KICK);
@@ -211,7 +211,7 @@ TEST(TeamBehaviour, TheKickerOfAKickOffPlaysTheBallAsPlayBegins) {
   const AbsCoord spot{-150.f, -50.f, 0.f};
   const auto kicker = Team().tick(teamBoard(spot, 0.f, 0.f)).body;
   EXPECT_EQ(kicker.actionType, AT::WALK);
-  EXPECT_EQ(kicker.forward, MAX_FORWARD);
+  EXPECT_EQ(kicker.forward, CARRY_SPEED);
   Blackboard ready = teamBoard(spot, 1000.f, 0.f, true, 0, GameState::READY, 2);
   EXPECT_EQ(Team().tick(ready).body.actionType, AT::STAND); // arrived: it stays there
   ready.gameController.kickOffTeam = 1;                     // the other team kicks off: out of the circle
@@ -248,7 +248,7 @@ TEST(TeamBehaviour, PlayingTakesTheAssignedRole) {
   const auto command = striker.tick(teamBoard({100.f, -200.f, 0.f}, 230.f, -150.f, true, 0, GameState::PLAYING, 3));
   EXPECT_EQ(striker.role(), ROLE_STRIKER); // alone: striker, carries
   EXPECT_EQ(command.body.actionType, AT::WALK);
-  EXPECT_EQ(command.body.forward, MAX_FORWARD);
+  EXPECT_EQ(command.body.forward, CARRY_SPEED);
   EXPECT_EQ(decodeMessage(command.teamMessage),
             (TeamInfo{3, ROLE_STRIKER, true, false, false, 139, 230, -150, 100, -200}));
   Team defender;
