@@ -15,9 +15,9 @@ once Avoid's walks kept off them.
 With `carry`, a ball lined up within CARRY_ANGLE, ahead and near the body's centre line, with
 no robot in the CARRY_CLEAR_* box ahead, is walked into at CARRY_SPEED instead of kicked: the
 feet push it on and the walk follows it, turning towards the aim, with no kick's stop (about
-2.2 s of the ball lying still under a standing robot). A carrier starts
-lining up with the aim up to CARRY_ANGLE off, where the ball still gains ground, rather than
-walking round the ball first. Carrying walks go through avoid's keepClear, as Avoid's do.
+2.2 s of the ball lying still under a standing robot). A carrier starts lining up with the
+aim up to CARRY_ANGLE off, where the ball still gains ground, rather than walking round the
+ball first. Carrying walks go through avoid's keepClear, as Avoid's do.
 """
 import math
 

@@ -28,6 +28,9 @@ void expectVelocities(const ActionCommand::All& command, float forward, float le
 
 Blackboard ballAt(float x, float y, bool seen = true, int lost = 0) { return board({0, 0, 0}, x, y, seen, lost); }
 
+/// LineUpAndKick at the opponent goal with carry on (Striker's).
+LineUpAndKick carrier() { return LineUpAndKick(OPPONENT_GOAL_X, OPPONENT_GOAL_Y, false, std::nullopt, std::nullopt, true); }
+
 } // namespace
 
 TEST(LineUpAndKickSkill, BallInFrontOfTheLeftFootKicksLeft) {
@@ -155,17 +158,13 @@ TEST(LineUpAndKickSkill, WithCarryAClearBallIsWalkedOnNotKicked) {
   // The ball in front of the left foot, lined up: a kick without carry, a walk into the
   // ball with it, steering its 50 mm off the centre line back under the body.
   EXPECT_EQ(LineUpAndKick().tick(ballAt(130.f, 50.f)).body.actionType, ActionType::KICK);
-  LineUpAndKick skill(OPPONENT_GOAL_X, OPPONENT_GOAL_Y, false, std::nullopt, std::nullopt, true);
+  LineUpAndKick skill = carrier();
   const auto command = skill.tick(ballAt(130.f, 50.f));
   EXPECT_EQ(command.body.actionType, ActionType::WALK);
   EXPECT_EQ(command.body.forward, CARRY_SPEED);
   expectVelocities(command, CARRY_SPEED, 100.f, 2.f * std::atan2(-50.f, 2870.f));
   EXPECT_TRUE(skill.liningUp());
 }
-
-namespace {
-LineUpAndKick carrier() { return LineUpAndKick(OPPONENT_GOAL_X, OPPONENT_GOAL_Y, false, std::nullopt, std::nullopt, true); }
-} // namespace
 
 TEST(LineUpAndKickSkill, ACarrierWalksABallOnFromAnAimAKickerWouldWalkRoundTo) {
   const AbsCoord pos{0.f, 0.f, 1.f}; // the goal 1.04 rad to the right of the ball ahead
