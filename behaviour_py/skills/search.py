@@ -8,6 +8,9 @@ and receiver; writes nothing.
               for that ball (the striker behind it, a supporter at its algorithm's target),
               ending facing it. Of several, the nearest to its seer counts (ties: the lower
               player number).
+  at feet:    its own last sighting puts the ball within BALL_AT_FEET_DIST of the body (a
+              robot that walked onto the ball stands on it, where no head turn sees it):
+              step straight away from it, without turning, until it would be that far.
   otherwise:  cycles of SEARCH_CYCLE_FRAMES: turn on the spot for SEARCH_TURN_LIMIT_FRAMES
               towards the side the ball was last seen on (under a full turn), then walk to
               the cycle's search spot (four round the centre circle in turn, each role
@@ -19,6 +22,7 @@ import math
 import actioncommand
 import robot
 
+from .avoid import keepClear
 from .ball import BEHIND_BALL_DIST, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, kickAim, pointBehindBall
 from .field import distance
 from .goalie import GOALIE_HOME_X
@@ -37,6 +41,8 @@ SEARCH_SPOT_COUNT = 4
 STRIKER_FIRST_SPOT = 0           # the striker searches the opponent half first, ...
 MIDFIELDER_FIRST_SPOT = 1        # ... the midfielder its own side ...
 DEFENDER_FIRST_SPOT = 2          # ... and the defender the own half
+BALL_AT_FEET_DIST = 250.0        # mm: a lost ball last seen this near lies at the feet, so ...
+SEARCH_BACK_OFF_SPEED = 150.0    # mm/s: ... the robot steps away from it this fast, not turning
 
 
 def homePosition(role, supporters):
@@ -103,6 +109,11 @@ class Search:
         if lost <= 0:
             return None
         pos = blackboard.localisation.robotPos
+        atFeet = blackboard.localisation.ballPosRR
+        if atFeet.distance < BALL_AT_FEET_DIST:
+            forward, left = keepClear(blackboard, -SEARCH_BACK_OFF_SPEED * math.cos(atFeet.heading),
+                                      -SEARCH_BACK_OFF_SPEED * math.sin(atFeet.heading))
+            return actioncommand.walk(forward, left)
         ball = teamBall(blackboard.gameController.playerNumber, blackboard.receiver.messages, blackboard.utime)
         if ball is not None:
             self.teamBallPose.setTarget(*teamBallTarget(role, ball[0], ball[1], pos.y, self.supporters))

@@ -9,7 +9,7 @@ from boards import board, message
 
 from skills.ball import BEHIND_BALL_DIST, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, kickAim, pointBehindBall
 from skills.field import FIELD_EDGE_SLACK, FIELD_HALF_WIDTH
-from skills.search import (HOME_NEAR_DIST, SEARCH_CYCLE_FRAMES, SEARCH_TURN_FRAMES, SEARCH_TURN_LIMIT_FRAMES,
+from skills.search import (BALL_AT_FEET_DIST, HOME_NEAR_DIST, SEARCH_CYCLE_FRAMES, SEARCH_TURN_FRAMES, SEARCH_TURN_LIMIT_FRAMES,
                            SEARCH_TURN_SPEED, Search, searchSpot, teamBall, teamBallTarget)
 from skills.supporter import THESIS
 from skills.team import Team
@@ -79,6 +79,26 @@ def test_a_lost_robot_walks_to_the_team_ball_instead_of_turning():
                                messages=[sighting(3, 600, 2000, 0)]), ROLE_STRIKER) is None
 
 
+def test_a_robot_that_lost_the_ball_at_its_feet_steps_away_from_it_before_turning():
+    # A full match had a striker stand on a ball in a corner and turn on it for 10 s: there no
+    # head turn sees it. Last seen 100 mm ahead-left: it steps back-right, not turning, ...
+    body = Search().tick(board((0.0, 0.0, 0.0), ball=(60.0, 80.0), seen=False, lost=SEARCH_TURN_FRAMES + 1,
+                               utime=NOW, messages=[sighting(3, 600, 1000, 1000)]), ROLE_STRIKER)
+    assert body.actionType == WALK and body.turn == pytest.approx(0.0)
+    assert math.atan2(body.left, body.forward) == pytest.approx(math.atan2(-80.0, -60.0))
+    # ... and behind it, forwards; beside a line, not over it.
+    body = Search().tick(board((0.0, 0.0, 0.0), ball=(-100.0, 0.0), seen=False, lost=SEARCH_TURN_FRAMES + 1),
+                         ROLE_MIDFIELDER)
+    assert body.forward > 0.0 and body.left == pytest.approx(0.0, abs=1e-3) and body.turn == pytest.approx(0.0)
+    body = Search().tick(board((0.0, -FIELD_HALF_WIDTH, math.pi / 2), ball=(0.0, -FIELD_HALF_WIDTH + 100.0), seen=False,
+                               lost=SEARCH_TURN_FRAMES + 1), ROLE_STRIKER)
+    assert body.forward == pytest.approx(0.0, abs=1e-3)
+    # Once it would be BALL_AT_FEET_DIST away, the search turns as before.
+    body = Search().tick(board((0.0, 0.0, 0.0), ball=(0.0, BALL_AT_FEET_DIST), seen=False,
+                               lost=SEARCH_TURN_FRAMES + 1), ROLE_STRIKER)
+    assert body.turn == pytest.approx(SEARCH_TURN_SPEED) and body.forward == 0.0
+
+
 def test_search_spots_cycle_round_the_centre_circle_from_each_roles_own():
     assert [searchSpot(ROLE_STRIKER, k) for k in range(5)] == [(1500.0, 0.0), (0.0, 1200.0), (-1500.0, 0.0),
                                                                (0.0, -1200.0), (1500.0, 0.0)]
@@ -103,7 +123,7 @@ def test_the_striker_turns_briefly_then_walks_to_a_search_spot():
 
 def test_a_supporter_goes_home_first_then_searches_from_spot_to_spot():
     def body(lost, pos):
-        return Search().tick(board(pos, ball=(0.0, 1000.0), seen=False, lost=SEARCH_TURN_FRAMES + lost),
+        return Search().tick(board(pos, ball=(0.0, 1500.0), seen=False, lost=SEARCH_TURN_FRAMES + lost),
                              ROLE_MIDFIELDER)
 
     assert body(1, (0.0, 0.0, 0.0)) is None  # away from home (0, 800): the thesis walks home

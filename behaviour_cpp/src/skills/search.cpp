@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "touchline/behaviour/skills/actioncommand.hpp"
+#include "touchline/behaviour/skills/avoid.hpp"
 #include "touchline/behaviour/skills/ball.hpp"
 #include "touchline/behaviour/skills/goalie.hpp"
 #include "touchline/behaviour/skills/supporter.hpp"
@@ -60,6 +61,12 @@ std::optional<ActionCommand::Body> Search::tick(const Blackboard& blackboard, in
   const int lost = blackboard.localisation.ballLostCount - SEARCH_TURN_FRAMES;
   if (lost <= 0) return std::nullopt;
   const AbsCoord pos = blackboard.localisation.robotPos;
+  const RRCoord atFeet = blackboard.localisation.ballPosRR;
+  if (atFeet.distance < BALL_AT_FEET_DIST) {
+    const WalkVelocity away = keepClear(blackboard, -SEARCH_BACK_OFF_SPEED * std::cos(atFeet.heading),
+                                        -SEARCH_BACK_OFF_SPEED * std::sin(atFeet.heading));
+    return actioncommand::walk(away.forward, away.left, 0.f);
+  }
   const GameControllerBlackboard& gc = blackboard.gameController;
   if (const auto ball = teamBall(gc.playerNumber, blackboard.receiver.messages, blackboard.utime)) {
     const AbsCoord target = teamBallTarget(role, ball->x, ball->y, pos.y, supporters_);

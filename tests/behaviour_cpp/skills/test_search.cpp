@@ -98,6 +98,30 @@ TEST(Search, ALostRobotWalksToTheTeamBallInsteadOfTurning) {
   EXPECT_FALSE(Search().tick(lostBoard({0.f, 0.f, 0.f}, 1000.f, 0.f, 0, {sighting(3, 600, 2000, 0)}), ROLE_STRIKER));
 }
 
+TEST(Search, ARobotThatLostTheBallAtItsFeetStepsAwayFromItBeforeTurning) {
+  // A full match had a striker stand on a ball in a corner and turn on it for 10 s: there no
+  // head turn sees it. Last seen 100 mm ahead-left: it steps back-right, not turning, ...
+  auto body = Search().tick(lostBoard({0.f, 0.f, 0.f}, 60.f, 80.f, 1, {sighting(3, 600, 1000, 1000)}), ROLE_STRIKER);
+  ASSERT_TRUE(body.has_value());
+  EXPECT_EQ(body->actionType, AT::WALK);
+  EXPECT_NEAR(body->turn, 0.f, 1e-6f);
+  EXPECT_NEAR(std::atan2(body->left, body->forward), std::atan2(-80.f, -60.f), 1e-5f);
+  // ... and behind it, forwards; beside a line, not over it.
+  body = Search().tick(lostBoard({0.f, 0.f, 0.f}, -100.f, 0.f, 1), ROLE_MIDFIELDER);
+  ASSERT_TRUE(body.has_value());
+  EXPECT_GT(body->forward, 0.f);
+  EXPECT_NEAR(body->left, 0.f, 1e-3f);
+  EXPECT_NEAR(body->turn, 0.f, 1e-6f);
+  body = Search().tick(lostBoard({0.f, -FIELD_HALF_WIDTH, kPi / 2}, 0.f, -FIELD_HALF_WIDTH + 100.f, 1), ROLE_STRIKER);
+  ASSERT_TRUE(body.has_value());
+  EXPECT_NEAR(body->forward, 0.f, 1e-3f);
+  // Once it would be BALL_AT_FEET_DIST away, the search turns as before.
+  body = Search().tick(lostBoard({0.f, 0.f, 0.f}, 0.f, BALL_AT_FEET_DIST, 1), ROLE_STRIKER);
+  ASSERT_TRUE(body.has_value());
+  EXPECT_NEAR(body->turn, SEARCH_TURN_SPEED, 1e-6f);
+  EXPECT_EQ(body->forward, 0.f);
+}
+
 TEST(Search, SearchSpotsCycleRoundTheCentreCircleFromEachRolesOwn) {
   const FieldPoint expected[] = {{1500.f, 0.f}, {0.f, 1200.f}, {-1500.f, 0.f}, {0.f, -1200.f}, {1500.f, 0.f}};
   for (int k = 0; k < 5; ++k) {
@@ -132,7 +156,7 @@ TEST(Search, TheStrikerTurnsBrieflyThenWalksToASearchSpot) {
 
 TEST(Search, ASupporterGoesHomeFirstThenSearchesFromSpotToSpot) {
   const auto body = [](int lost, AbsCoord pos) {
-    return Search().tick(lostBoard(pos, 0.f, 1000.f, lost), ROLE_MIDFIELDER);
+    return Search().tick(lostBoard(pos, 0.f, 1500.f, lost), ROLE_MIDFIELDER);
   };
   EXPECT_FALSE(body(1, {0.f, 0.f, 0.f})); // away from home (0, 800): the thesis walks home
   const auto turn = body(1, {0.f, 800.f - HOME_NEAR_DIST + 1.f, 0.f}); // home: turns
