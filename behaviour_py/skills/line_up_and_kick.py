@@ -12,12 +12,14 @@ robot, for SIDESTEP_FRAMES, so the next kick has a clear line. Lining-up steps a
 keep off touched sectors (avoid's keepOffTouches): they were most of the pushing fouls left
 once Avoid's walks kept off them.
 
-With `carry`, a ball lined up within CARRY_ANGLE, ahead and near the body's centre line, with
-no robot in the CARRY_CLEAR_* box ahead, is walked into at CARRY_SPEED instead of kicked: the
-feet push it on and the walk follows it, turning towards the aim, with no kick's stop (about
-2.2 s of the ball lying still under a standing robot). A carrier starts lining up with the
-aim up to CARRY_ANGLE off, where the ball still gains ground, rather than walking round the
-ball first. Carrying walks go through avoid's keepClear, as Avoid's do.
+With `carry`, a ball lined up within CARRY_ANGLE, ahead and near the body's centre line, is
+walked into at CARRY_SPEED instead of kicked: the feet push it on and the walk follows it,
+turning towards the aim, with no kick's stop (about 2.2 s of the ball lying still under a
+standing robot). A robot ahead does not stop it: a kick into a robot at the ball mostly
+rebounds, often out of the field, and keepClear stops the walk at a touch (no push). A
+carrier starts lining up with the aim up to CARRY_ANGLE off, where the ball still gains
+ground, rather than walking round the ball first. Carrying walks go through avoid's
+keepClear, as Avoid's do.
 """
 import math
 
@@ -55,9 +57,7 @@ KICK_POWER = 1.0                           # default power of a kick ...
 DRIBBLE_POWER = 1.0                        # ... and of a dribble (about 1 m)
 CARRY_ANGLE = 1.2                          # rad: with carry, the aim this well in line (lining up starts so too), ...
 CARRY_BALL_X = 400.0                       # mm: ... the ball ahead within this ...
-CARRY_BALL_Y = 80.0                        # mm: ... and this near the body's centre line, ...
-CARRY_CLEAR_X = 600.0                      # mm: ... and no obstacle ahead within this ...
-CARRY_CLEAR_Y = 200.0                      # mm: ... and this either side: ...
+CARRY_BALL_Y = 120.0                       # mm: ... and this near the body's centre line: ...
 CARRY_SPEED = 180.0                        # mm/s: ... walk into the ball at this (at full speed the feet strike it away)
 
 
@@ -96,9 +96,7 @@ class LineUpAndKick:
         aimError = robot.normaliseTheta(math.atan2(aimY - ball.y, aimX - ball.x) - pos.theta)
         self.seen = remember(self.seen, blackboard)
         nearest, nearestY = CONTEST_DIST, 0.0  # the obstacle nearest the ball within CONTEST_DIST
-        clearAhead = True
         for x, y in obstacles(blackboard, self.seen):
-            clearAhead = clearAhead and not (0.0 < x < CARRY_CLEAR_X and abs(y) < CARRY_CLEAR_Y)
             dist = math.hypot(x - ballRR.x(), y - ballRR.y())
             if dist < nearest:
                 nearest, nearestY = dist, y
@@ -124,7 +122,7 @@ class LineUpAndKick:
         else:
             self.stalledFrames = 0
             self.stallBall = (ball.x, ball.y)
-        if (self.carry and clearAhead and abs(aimError) < CARRY_ANGLE
+        if (self.carry and abs(aimError) < CARRY_ANGLE
                 and 0.0 < ballRR.x() < CARRY_BALL_X and abs(ballRR.y()) < CARRY_BALL_Y):
             left = clamp(LINE_UP_GAIN * ballRR.y(), -LINE_UP_MAX_SPEED, LINE_UP_MAX_SPEED)
             turn = clamp(TURN_GAIN * aimError, -LINE_UP_MAX_TURN, LINE_UP_MAX_TURN)

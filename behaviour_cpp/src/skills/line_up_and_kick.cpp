@@ -33,9 +33,7 @@ ActionCommand::All LineUpAndKick::tick(const Blackboard& blackboard) {
       std::atan2(static_cast<float>(aim.y) - ball.y, static_cast<float>(aim.x) - ball.x) - pos.theta);
   seen_ = remember(seen_, blackboard);
   float nearest = CONTEST_DIST, nearestY = 0.f; // the obstacle nearest the ball within CONTEST_DIST
-  bool clearAhead = true;
   for (const Obstacle& o : obstacles(blackboard, seen_)) {
-    clearAhead = clearAhead && !(0.f < o.x && o.x < CARRY_CLEAR_X && std::fabs(o.y) < CARRY_CLEAR_Y);
     const float dist = std::hypot(o.x - ballRR.x(), o.y - ballRR.y());
     if (dist < nearest) {
       nearest = dist;
@@ -67,7 +65,7 @@ ActionCommand::All LineUpAndKick::tick(const Blackboard& blackboard) {
     stallBallX_ = ball.x;
     stallBallY_ = ball.y;
   }
-  if (carry_ && clearAhead && std::fabs(aimError) < CARRY_ANGLE && 0.f < ballRR.x() && ballRR.x() < CARRY_BALL_X &&
+  if (carry_ && std::fabs(aimError) < CARRY_ANGLE && 0.f < ballRR.x() && ballRR.x() < CARRY_BALL_X &&
       std::fabs(ballRR.y()) < CARRY_BALL_Y) {
     const float left = clamp(LINE_UP_GAIN * ballRR.y(), -LINE_UP_MAX_SPEED, LINE_UP_MAX_SPEED);
     const float turn = clamp(TURN_GAIN * aimError, -LINE_UP_MAX_TURN, LINE_UP_MAX_TURN);

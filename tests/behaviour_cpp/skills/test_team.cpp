@@ -108,13 +108,15 @@ TEST(TeamGoalie, GuardsThenClearsABallNearItsBox) {
 }
 
 // Striker
-TEST(TeamStriker, CarriesAClearBallKicksWhenARobotIsAheadAndDribblesNearTheGoal) {
-  const auto body = Striker().tick(board({0.f, 0.f, 0.f}, 130.f, 50.f)).body;
+TEST(TeamStriker, CarriesTheBallPastARobotAheadTooAndDribblesNearTheGoal) {
+  auto body = Striker().tick(board({0.f, 0.f, 0.f}, 130.f, 50.f)).body;
   EXPECT_EQ(body.actionType, AT::WALK);
   EXPECT_EQ(body.forward, CARRY_SPEED);
   Blackboard ahead = board({0.f, 0.f, 0.f}, 130.f, 50.f);
   ahead.vision.robots = {seenRobot(550.f, 150.f)};
-  EXPECT_EQ(Striker().tick(ahead).body.actionType, AT::KICK);
+  body = Striker().tick(ahead).body;
+  EXPECT_EQ(body.actionType, AT::WALK);
+  EXPECT_EQ(body.forward, CARRY_SPEED);
   EXPECT_EQ(Striker().tick(board({2300.f, 0.f, 0.f}, 2430.f, 50.f)).body.actionType, AT::DRIBBLE);
 }
 

@@ -10,10 +10,11 @@
 // from the nearest robot, for SIDESTEP_FRAMES, so the next kick has a clear line. Lining-up
 // steps and sidesteps keep off touched sectors (avoid's keepOffTouches): they were most of the
 // pushing fouls left once Avoid's walks kept off them.
-// With `carry`, a ball lined up within CARRY_ANGLE, ahead and near the body's centre line,
-// with no robot in the CARRY_CLEAR_* box ahead, is walked into at CARRY_SPEED instead of
-// kicked: the feet push it on and the walk follows it, turning towards the aim, with no
-// kick's stop (about 2.2 s of the ball lying still under a standing robot).
+// With `carry`, a ball lined up within CARRY_ANGLE, ahead and near the body's centre line, is
+// walked into at CARRY_SPEED instead of kicked: the feet push it on and the walk follows it,
+// turning towards the aim, with no kick's stop (about 2.2 s of the ball lying still under a
+// standing robot). A robot ahead does not stop it: a kick into a robot at the ball mostly
+// rebounds, often out of the field, and keepClear stops the walk at a touch (no push).
 // A carrier starts lining up with the aim up to CARRY_ANGLE off, where the ball still gains
 // ground, rather than walking round the ball first. Carrying walks go through avoid's
 // keepClear, as Avoid's do. The port of behaviour_py/skills/line_up_and_kick.py.
@@ -53,9 +54,7 @@ inline constexpr float KICK_POWER = 1.f;             ///< default power of a kic
 inline constexpr float DRIBBLE_POWER = 1.0f;         ///< ... and of a dribble (about 1 m)
 inline constexpr float CARRY_ANGLE = 1.2f;           ///< rad: with carry, the aim this well in line (lining up starts so too), ...
 inline constexpr float CARRY_BALL_X = 400.f;         ///< mm: ... the ball ahead within this ...
-inline constexpr float CARRY_BALL_Y = 80.f;          ///< mm: ... and this near the body's centre line, ...
-inline constexpr float CARRY_CLEAR_X = 600.f;        ///< mm: ... and no obstacle ahead within this ...
-inline constexpr float CARRY_CLEAR_Y = 200.f;        ///< mm: ... and this either side: ...
+inline constexpr float CARRY_BALL_Y = 120.f;         ///< mm: ... and this near the body's centre line: ...
 inline constexpr float CARRY_SPEED = 180.f;          ///< mm/s: ... walk into the ball at this (at full speed the feet strike it away)
 
 class LineUpAndKick : public api::Behaviour {
