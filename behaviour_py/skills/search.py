@@ -1,7 +1,8 @@
 """Search: the body of a field player (not the goalie) that has not seen the ball for
 SEARCH_TURN_FRAMES, so that a lost robot never turns on the spot for long (issue #17; the
-thesis saw supporters spinning when lost). Reads the Blackboard's localisation, gameController
-and receiver; writes nothing.
+thesis saw supporters spinning when lost). Reads the Blackboard's localisation, gameController,
+receiver and motion (its touches, through avoid's keepClear and GoToPose's Avoid); writes
+nothing.
 
   team ball:  a teammate saw the ball recently (its message says so, is at most
               MESSAGE_STALE_US old, and it is not penalised): walk to where the role stands

@@ -2,7 +2,8 @@
 // Search: the body of a field player (not the goalie) that has not seen the ball for
 // SEARCH_TURN_FRAMES, so that a lost robot never turns on the spot for long. The port of
 // behaviour_py/skills/search.py (which says what it does); reads the Blackboard's
-// localisation, gameController and receiver, writes nothing.
+// localisation, gameController, receiver and motion (its touches, through keepClear and
+// GoToPose's Avoid), writes nothing.
 #include <optional>
 #include <vector>
 
