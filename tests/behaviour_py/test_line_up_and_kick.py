@@ -134,7 +134,7 @@ def test_a_carrier_walks_a_ball_on_from_an_aim_a_kicker_would_walk_round_to():
 
 
 def test_a_carrier_walks_on_past_a_robot_ahead_but_not_into_one_it_touches():
-    # A kick into a robot at the ball mostly rebounds (full matches: often out of the field):
+    # A kick into a robot at the ball often rebounds (in full matches, sometimes out of the field):
     # the carrier walks on, and stops at a touch rather than push.
     ahead = board(ORIGIN, ball=(130.0, 50.0), robots=[seenRobot(550.0, 150.0)])  # 460 mm beyond the ball
     body = LineUpAndKick(carry=True).tick(ahead).body

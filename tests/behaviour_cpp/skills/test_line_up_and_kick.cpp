@@ -181,7 +181,7 @@ TEST(LineUpAndKickSkill, ACarrierWalksABallOnFromAnAimAKickerWouldWalkRoundTo) {
 }
 
 TEST(LineUpAndKickSkill, ACarrierWalksOnPastARobotAheadButNotIntoOneItTouches) {
-  // A kick into a robot at the ball mostly rebounds (full matches: often out of the field):
+  // A kick into a robot at the ball often rebounds (in full matches, sometimes out of the field):
   // the carrier walks on, and stops at a touch rather than push.
   Blackboard blackboard = ballAt(130.f, 50.f);
   blackboard.vision.robots = {seenRobot(550.f, 150.f)}; // 460 mm beyond the ball

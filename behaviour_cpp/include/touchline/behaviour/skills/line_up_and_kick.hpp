@@ -13,8 +13,8 @@
 // With `carry`, a ball lined up within CARRY_ANGLE, ahead and near the body's centre line, is
 // walked into at CARRY_SPEED instead of kicked: the feet push it on and the walk follows it,
 // turning towards the aim, with no kick's stop (about 2.2 s of the ball lying still under a
-// standing robot). A robot ahead does not stop it: a kick into a robot at the ball mostly
-// rebounds, often out of the field, and keepClear stops the walk at a touch (no push).
+// standing robot). A robot ahead does not stop it: a kick into a robot at the ball often
+// rebounds, sometimes out of the field, and keepClear stops the walk at a touch (no push).
 // A carrier starts lining up with the aim up to CARRY_ANGLE off, where the ball still gains
 // ground, rather than walking round the ball first. Carrying walks go through avoid's
 // keepClear, as Avoid's do. The port of behaviour_py/skills/line_up_and_kick.py.
