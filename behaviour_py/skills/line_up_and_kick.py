@@ -66,7 +66,7 @@ class LineUpAndKick:
                  carry=False):
         """goalX, goalY: where to kick (mm); dribble: dribble instead of kicking; power:
         [0, 1], None for KICK_POWER or DRIBBLE_POWER; policy: GoToBall's (None: GoToPose);
-        carry: walk a clear ball on instead of kicking it."""
+        carry: walk the ball on instead of kicking it, past a robot ahead too."""
         self.goalX = goalX
         self.goalY = goalY
         self.dribble = dribble

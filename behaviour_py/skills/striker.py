@@ -1,5 +1,5 @@
-"""Striker: to the ball, lined up at the opponent goal (LineUpAndKick); carries a clear ball
-on (LineUpAndKick's carry) or kicks, or dribbles while the ball is within STRIKER_DRIBBLE_DIST
+"""Striker: to the ball, lined up at the opponent goal (LineUpAndKick); carries the ball on
+(LineUpAndKick's carry) or kicks, or dribbles while the ball is within STRIKER_DRIBBLE_DIST
 of the opponent goal's centre. The choice is made while neither is lining up and kept
 through a line-up."""
 import math

@@ -61,7 +61,7 @@ class LineUpAndKick : public api::Behaviour {
  public:
   /// goalX, goalY: where to kick (mm); dribble: dribble instead of kicking; power: [0, 1],
   /// nullopt for KICK_POWER or DRIBBLE_POWER; policy: GoToBall's (nullopt: GoToPose);
-  /// carry: walk a clear ball on instead of kicking it.
+  /// carry: walk the ball on instead of kicking it, past a robot ahead too.
   explicit LineUpAndKick(float goalX = OPPONENT_GOAL_X, float goalY = OPPONENT_GOAL_Y, bool dribble = false,
                          std::optional<float> power = std::nullopt,
                          const std::optional<std::string>& policy = std::nullopt, bool carry = false);
