@@ -34,7 +34,11 @@ def kickAim(ballX, ballY, goalX, goalY, behind):
     line, where a ball out is put back, had strikers standing beside it until someone else
     moved it). Then the aim turns towards that line's direction just enough for the robot to
     stand FIELD_EDGE_SLACK beyond it, keeping its side of the goal: the point is the goal's
-    distance away along the turned aim. The touchlines first, then the goal lines."""
+    distance away along the turned aim. The touchlines first, then the goal lines. Near a
+    corner no aim keeps the robot within both (turning off the goal line put it beyond the
+    touchline again, facing along the goal line with the ball beside it, never lining up:
+    10 s stuck in the own corner): then it aims out of the corner, standing equally far
+    beyond both lines (cornerAim)."""
     dx = goalX - ballX
     dy = goalY - ballY
     dist = math.sqrt(dx * dx + dy * dy)  # as pointBehindBall: the same bits in both ports
@@ -52,9 +56,23 @@ def kickAim(ballX, ballY, goalX, goalY, behind):
         dirX = limitedX
         dirY = math.copysign(math.sqrt(max(0.0, 1.0 - dirX * dirX)), dirY)
         turned = True
+        if limitAim(dirY, ballY, FIELD_HALF_WIDTH + FIELD_EDGE_SLACK, behind) != dirY:
+            dirX, dirY = cornerAim(ballX, ballY, behind)
     if not turned:
         return goalX, goalY
     return ballX + dist * dirX, ballY + dist * dirY
+
+
+def cornerAim(ballX, ballY, behind):
+    """The unit aim (x, y) out of the corner nearest the ball that stands a robot `behind` mm
+    behind the ball equally far beyond both lines' slack: equal room left on both axes
+    (roomX - x = roomY - y, the rooms in units of `behind`). Where the room on one axis
+    alone allows an aim, this is the one-line aim, so the two meet where a corner starts."""
+    roomX = (FIELD_HALF_LENGTH + FIELD_EDGE_SLACK - abs(ballX)) / behind
+    roomY = (FIELD_HALF_WIDTH + FIELD_EDGE_SLACK - abs(ballY)) / behind
+    c = max(-1.0, min(1.0, roomX - roomY))  # x - y of the aim
+    x = (c + math.sqrt(2.0 - c * c)) / 2.0
+    return -math.copysign(x, ballX), -math.copysign(x - c, ballY)
 
 
 def limitAim(component, ball, limit, behind):

@@ -6,7 +6,7 @@ import pytest
 import robot
 from boards import board
 
-from skills.ball import BALL_LOST_FRAMES, kickAim, pointBehindBall
+from skills.ball import BALL_LOST_FRAMES, cornerAim, kickAim, pointBehindBall
 from skills.field import FIELD_EDGE_SLACK, FIELD_HALF_LENGTH, FIELD_HALF_WIDTH
 from skills.go_to_ball import GoToBall
 
@@ -48,6 +48,24 @@ def test_a_ball_on_the_own_goal_line_is_aimed_out_to_its_goal_side():
     x, y, theta = standing(-FIELD_HALF_LENGTH, 500.0, kickAim(-FIELD_HALF_LENGTH, 500.0, 3000.0, 0.0, 200.0))
     assert x == pytest.approx(-FIELD_HALF_LENGTH - FIELD_EDGE_SLACK)
     assert -math.pi / 2 < theta < -math.pi / 4  # along the line, towards the goal's side (-y)
+
+
+def test_a_ball_in_a_corner_is_aimed_out_of_it_standing_as_far_beyond_both_lines():
+    # Turning off the goal line stood the robot beyond the touchline again, facing along the
+    # goal line with the ball beside it: 10 s stuck in the own corner.
+    for ball in ((-FIELD_HALF_LENGTH + 10.0, -FIELD_HALF_WIDTH + 30.0), (-FIELD_HALF_LENGTH, FIELD_HALF_WIDTH)):
+        x, y, theta = standing(*ball, kickAim(*ball, 3000.0, 0.0, 200.0))
+        assert -x - FIELD_HALF_LENGTH == pytest.approx(abs(y) - FIELD_HALF_WIDTH)
+        assert abs(y) > FIELD_HALF_WIDTH + FIELD_EDGE_SLACK  # no aim keeps it within both
+        assert 0.0 < (theta if ball[1] < 0.0 else -theta) < math.pi / 2  # out of the corner, into the field
+
+
+def test_the_corner_aim_meets_the_one_line_aim_where_the_corner_starts():
+    # 120 mm and 160 mm of room to the lines' slack: aiming (0.6, 0.8), the robot stands on both.
+    ball = (-(FIELD_HALF_LENGTH + FIELD_EDGE_SLACK - 120.0), -(FIELD_HALF_WIDTH + FIELD_EDGE_SLACK - 160.0))
+    assert cornerAim(*ball, 200.0) == pytest.approx((0.6, 0.8))
+    x, y, theta = standing(*ball, kickAim(*ball, 3000.0, 0.0, 200.0))
+    assert (x, y) == pytest.approx((-FIELD_HALF_LENGTH - FIELD_EDGE_SLACK, -FIELD_HALF_WIDTH - FIELD_EDGE_SLACK))
 
 
 def test_beside_a_ball_on_the_touchline_it_stands_facing_along_the_line():

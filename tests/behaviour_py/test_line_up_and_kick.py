@@ -6,8 +6,8 @@ import pytest
 import robot
 from boards import board, relative, seenRobot
 
-from skills.ball import BALL_LOST_FRAMES, BEHIND_BALL_DIST
-from skills.field import FIELD_EDGE_SLACK, FIELD_HALF_WIDTH
+from skills.ball import BALL_LOST_FRAMES, BEHIND_BALL_DIST, kickAim, pointBehindBall
+from skills.field import FIELD_EDGE_SLACK, FIELD_HALF_LENGTH, FIELD_HALF_WIDTH, clampToField
 from skills.go_to_ball import GoToBall
 from skills.line_up_and_kick import CARRY_SPEED, SIDESTEP_FRAMES, STALL_FRAMES, LineUpAndKick
 
@@ -66,6 +66,16 @@ def test_a_ball_on_the_touchline_is_kicked_along_it():
     assert relative(pos, 130.0, 50.0) == pytest.approx(ball)
     body = LineUpAndKick().tick(board(pos, ball=ball)).body
     assert (body.actionType, body.foot) == (KICK, robot.Foot.LEFT)
+
+def test_a_ball_in_the_own_corner_is_lined_up_from_where_the_approach_ends():
+    # The approach's target, behind the ball, lies beyond both lines; the walk stops at the
+    # slack. From there the ball must be ahead and the aim in line, or nobody kicks it.
+    ball = robot.AbsCoord(-FIELD_HALF_LENGTH + 20.0, -FIELD_HALF_WIDTH + 20.0)
+    x, y, theta = pointBehindBall(ball, *kickAim(ball.x, ball.y, 3000.0, 0.0, BEHIND_BALL_DIST), BEHIND_BALL_DIST)
+    skill = LineUpAndKick()
+    assert skill.tick(board((*clampToField(x, y, -FIELD_EDGE_SLACK), theta), ball=(ball.x, ball.y))).body.actionType == WALK
+    assert skill.liningUp
+
 
 # The goal 1.04 rad to the right, the ball 60 mm beyond the kicking spot and 50 mm off the
 # left foot's line: an approach alone, a kick at once when a robot is near the ball.

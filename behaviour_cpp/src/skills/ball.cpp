@@ -53,9 +53,22 @@ FieldPointExact kickAim(double ballX, double ballY, double goalX, double goalY, 
     dirX = limitedX;
     dirY = std::copysign(std::sqrt(std::max(0.0, 1.0 - dirX * dirX)), dirY);
     turned = true;
+    if (limitAim(dirY, ballY, double{FIELD_HALF_WIDTH} + double{FIELD_EDGE_SLACK}, behind) != dirY) {
+      const FieldPointExact corner = cornerAim(ballX, ballY, behind);
+      dirX = corner.x;
+      dirY = corner.y;
+    }
   }
   if (!turned) return {goalX, goalY};
   return {ballX + dist * dirX, ballY + dist * dirY};
+}
+
+FieldPointExact cornerAim(double ballX, double ballY, double behind) {
+  const double roomX = (double{FIELD_HALF_LENGTH} + double{FIELD_EDGE_SLACK} - std::abs(ballX)) / behind;
+  const double roomY = (double{FIELD_HALF_WIDTH} + double{FIELD_EDGE_SLACK} - std::abs(ballY)) / behind;
+  const double c = std::clamp(roomX - roomY, -1.0, 1.0); // x - y of the aim
+  const double x = (c + std::sqrt(2.0 - c * c)) / 2.0;
+  return {-std::copysign(x, ballX), -std::copysign(x - c, ballY)};
 }
 
 double limitAim(double component, double ball, double limit, double behind) {

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <utility>
+
 #include "boards.hpp"
 #include "touchline/behaviour/skills/ball.hpp"
 #include "touchline/behaviour/skills/field.hpp"
@@ -65,6 +68,32 @@ TEST(GoToBallSkill, ABallOnTheOwnGoalLineIsAimedOutToItsGoalSide) {
   EXPECT_NEAR(stand.x, -FIELD_HALF_LENGTH - FIELD_EDGE_SLACK, 1e-2f);
   EXPECT_GT(stand.theta, -kPi / 2); // along the line, towards the goal's side (-y)
   EXPECT_LT(stand.theta, -kPi / 4);
+}
+
+TEST(GoToBallSkill, ABallInACornerIsAimedOutOfItStandingAsFarBeyondBothLines) {
+  // Turning off the goal line stood the robot beyond the touchline again, facing along the
+  // goal line with the ball beside it: 10 s stuck in the own corner.
+  for (const auto [ballX, ballY] : {std::pair{-FIELD_HALF_LENGTH + 10.f, -FIELD_HALF_WIDTH + 30.f},
+                                    std::pair{-FIELD_HALF_LENGTH, FIELD_HALF_WIDTH}}) {
+    const AbsCoord stand = standing(ballX, ballY);
+    EXPECT_NEAR(-stand.x - FIELD_HALF_LENGTH, std::abs(stand.y) - FIELD_HALF_WIDTH, 1e-2f);
+    EXPECT_GT(std::abs(stand.y), FIELD_HALF_WIDTH + FIELD_EDGE_SLACK); // no aim keeps it within both
+    const float inwards = ballY < 0.f ? stand.theta : -stand.theta; // out of the corner, into the field
+    EXPECT_GT(inwards, 0.f);
+    EXPECT_LT(inwards, kPi / 2);
+  }
+}
+
+TEST(GoToBallSkill, TheCornerAimMeetsTheOneLineAimWhereTheCornerStarts) {
+  // 120 mm and 160 mm of room to the lines' slack: aiming (0.6, 0.8), the robot stands on both.
+  const float ballX = -(FIELD_HALF_LENGTH + FIELD_EDGE_SLACK - 120.f);
+  const float ballY = -(FIELD_HALF_WIDTH + FIELD_EDGE_SLACK - 160.f);
+  const FieldPointExact aim = cornerAim(ballX, ballY, 200.0);
+  EXPECT_NEAR(aim.x, 0.6, 1e-9);
+  EXPECT_NEAR(aim.y, 0.8, 1e-9);
+  const AbsCoord stand = standing(ballX, ballY);
+  EXPECT_NEAR(stand.x, -FIELD_HALF_LENGTH - FIELD_EDGE_SLACK, 1e-2f);
+  EXPECT_NEAR(stand.y, -FIELD_HALF_WIDTH - FIELD_EDGE_SLACK, 1e-2f);
 }
 
 TEST(GoToBallSkill, BesideABallOnTheTouchlineItStandsFacingAlongTheLine) {

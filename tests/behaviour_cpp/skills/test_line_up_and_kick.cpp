@@ -94,6 +94,19 @@ TEST(LineUpAndKickSkill, ABallOnTheTouchlineIsKickedAlongIt) {
   EXPECT_EQ(body.foot, Foot::LEFT);
 }
 
+TEST(LineUpAndKickSkill, ABallInTheOwnCornerIsLinedUpFromWhereTheApproachEnds) {
+  // The approach's target, behind the ball, lies beyond both lines; the walk stops at the
+  // slack. From there the ball must be ahead and the aim in line, or nobody kicks it.
+  const AbsCoord ball{-FIELD_HALF_LENGTH + 20.f, -FIELD_HALF_WIDTH + 20.f, 0.f};
+  const FieldPointExact aim = kickAim(ball.x, ball.y, 3000.0, 0.0, BEHIND_BALL_DIST);
+  const AbsCoord target =
+      pointBehindBall(ball, static_cast<float>(aim.x), static_cast<float>(aim.y), BEHIND_BALL_DIST);
+  const FieldPoint reached = clampToField(target.x, target.y, -FIELD_EDGE_SLACK);
+  LineUpAndKick skill;
+  EXPECT_EQ(skill.tick(board({reached.x, reached.y, target.theta}, ball.x, ball.y)).body.actionType, ActionType::WALK);
+  EXPECT_TRUE(skill.liningUp());
+}
+
 namespace {
 
 // The goal 1.04 rad to the right, the ball 60 mm beyond the kicking spot and 50 mm off the

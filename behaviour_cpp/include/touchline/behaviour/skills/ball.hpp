@@ -27,9 +27,19 @@ struct FieldPointExact {
 /// a ball out is put back, had strikers standing beside it until someone else moved it).
 /// Then the aim turns towards that line's direction just enough for the robot to stand
 /// FIELD_EDGE_SLACK beyond it, keeping its side of the goal: the point is the goal's distance
-/// away along the turned aim. The touchlines first, then the goal lines. In double, operation
-/// for operation as Python computes it (the learned walker's target is built on it).
+/// away along the turned aim. The touchlines first, then the goal lines. Near a corner no aim
+/// keeps the robot within both (turning off the goal line put it beyond the touchline again,
+/// facing along the goal line with the ball beside it, never lining up: 10 s stuck in the own
+/// corner): then it aims out of the corner, standing equally far beyond both lines
+/// (cornerAim). In double, operation for operation as Python computes it (the learned
+/// walker's target is built on it).
 FieldPointExact kickAim(double ballX, double ballY, double goalX, double goalY, double behind);
+
+/// The unit aim (x, y) out of the corner nearest the ball that stands a robot `behind` mm
+/// behind the ball equally far beyond both lines' slack: equal room left on both axes
+/// (roomX - x = roomY - y, the rooms in units of `behind`). Where the room on one axis alone
+/// allows an aim, this is the one-line aim, so the two meet where a corner starts.
+FieldPointExact cornerAim(double ballX, double ballY, double behind);
 
 /// The aim's `component` along one axis, limited so that standing `behind` mm behind the
 /// ball (at `ball` on that axis) keeps the robot within +-limit on it.
