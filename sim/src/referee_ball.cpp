@@ -94,7 +94,27 @@ void Referee::check_ball_out(const RefereeInput& in, RefereeDecision& d) const {
     if (std::fabs(put.x_mm) > hl - f.goal_post_diameter_mm / 2 - r && std::fabs(put.y_mm) < clear_of_post)
       put.y_mm = detail::sign_of(crossing->y_mm) * clear_of_post;
   }
+  clear_of_robots(in, setback != 0.f ? detail::sign_of(setback) : -detail::sign_of(put.x_mm), put);
   d.ball = put;
+}
+
+// Candidates every kClearStepMm along x, nearest first, up to the goal lines; none clear
+// within kClearMaxMm either way leaves the spot as it is (a crowd the ball cannot avoid).
+void Referee::clear_of_robots(const RefereeInput& in, float toward_x, BallPlacement& put) const {
+  constexpr float kClearStepMm = 50.f, kClearMaxMm = 2000.f;
+  const float clearance = rules_.ball_out_clearance_mm, hl = field_.half_length();
+  if (clearance <= 0.f) return;
+  const auto clear = [&](float x) {
+    for (const RobotOnField& r : in.robots)
+      if (std::hypot(r.body.x_mm - x, r.body.y_mm - put.y_mm) < clearance) return false;
+    return true;
+  };
+  for (float shift = 0.f; shift <= kClearMaxMm; shift += kClearStepMm)
+    for (const float x : {put.x_mm + toward_x * shift, put.x_mm - toward_x * shift})
+      if (std::fabs(x) <= hl && clear(x)) {
+        put.x_mm = x;
+        return;
+      }
 }
 
 // The watch restarts whenever PLAYING starts (kick-off) and while a set play runs (it has

@@ -56,6 +56,7 @@ void Referee::award_ball_out(const RefereeInput& in, RefereeDecision& d) {
       start_set_play(SetPlay::kGoalKick, defending, in.utime, d);
     }
   }
+  clear_of_robots(in, -detail::sign_of(put.x_mm), put);
   d.ball = put;
 }
 

@@ -74,6 +74,33 @@ TEST_F(BallOut, OverACornerTheLineCrossedFirstCounts) {
   expect_ball(put_back(3050.f, 2080.f, -1, 2000.f, 1000.f), 2890.f, 2000.f);
 }
 
+TEST_F(BallOut, ASpotWithARobotOnItMovesAlongTheLineTheSetbacksWayUntilClear) {
+  // Put into a foot, the ball was knocked out again at once. Team 0 touched it last: the
+  // spot (-500, 2000) moves towards -x, the setback's way, until 200 mm from the robot.
+  // Clear from x <= -673.6 (or >= -286.4): the 50 mm steps reach -700 before -300 is clear.
+  put_robot({1, 2}, -480.f, 1950.f, 0.f);
+  expect_ball(put_back(500.f, 2040.f, 0), -700.f, 2000.f);
+  // A second robot there: -x is clear only from -949, +x from -286.4, so +x it is (-250).
+  put_robot({0, 3}, -750.f, 1980.f, 0.f);
+  expect_ball(put_back(500.f, 2040.f, 0), -250.f, 2000.f);
+}
+
+TEST_F(BallOut, AClearSpotOrAZeroClearanceLeavesTheSpot) {
+  put_robot({1, 2}, -500.f, 1750.f, 0.f); // 250 mm inside the line: clear
+  expect_ball(put_back(500.f, 2040.f, 0), -500.f, 2000.f);
+  rules.ball_out_clearance_mm = 0.f;
+  referee.reset();
+  now_s = kKickOffS;
+  put_robot({1, 2}, -500.f, 2000.f, 0.f);
+  expect_ball(put_back(500.f, 2040.f, 0), -500.f, 2000.f);
+}
+
+TEST_F(BallOut, AMovedSpotStaysWithinTheGoalLines) {
+  // On the corner spot, the setback's way (+x) is past the goal line: it goes the other way.
+  put_robot({0, 2}, 3000.f, 2000.f, 0.f);
+  expect_ball(put_back(2800.f, 2040.f, 1), 2800.f, 2000.f);
+}
+
 TEST_F(BallOut, InsetPutsItInsideTheLine) {
   rules.ball_out_inset_mm = 400;
   expect_ball(put_back(500.f, 2040.f, -1), 500.f, 1600.f);

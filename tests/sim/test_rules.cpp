@@ -56,6 +56,7 @@ void expect_equal(const RulesDef& a, const RulesDef& b) {
   EXPECT_EQ(a.ball_out, b.ball_out);
   EXPECT_EQ(a.ball_out_setback_mm, b.ball_out_setback_mm);
   EXPECT_EQ(a.ball_out_inset_mm, b.ball_out_inset_mm);
+  EXPECT_EQ(a.ball_out_clearance_mm, b.ball_out_clearance_mm);
 }
 
 TEST(Rules, BothShippedFilesHoldTheCodeDefaults) {

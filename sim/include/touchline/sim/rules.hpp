@@ -60,6 +60,12 @@ struct RulesDef {
   bool ball_out = true;         ///< put back a ball that left the field (else it stays where it is)
   float ball_out_setback_mm = 1000.f; ///< ball put back this far towards the last toucher's own goal, mm
   float ball_out_inset_mm = 0.f;      ///< ball put back this far inside the line it crossed, mm (0: on it)
+  /// A ball put back (or on a set play's spot) is moved along x until every robot's body
+  /// centre is this far from it, mm (0: never moved). A referee puts the ball beside a robot,
+  /// not into its feet; one put into a foot was knocked out again at once (4 C++ matches:
+  /// 52 of 345 placements out again within 1 s). 200: a foot's toe reaches about 120 mm
+  /// from the body centre, plus the ball's radius and a margin.
+  float ball_out_clearance_mm = 200.f;
 
   // --- set plays (SPL 2020 on; off: the 2011 ball-out rule above) ---
   /// A ball out gives the opponents of its last toucher a kick-in (over a touchline), the
