@@ -67,6 +67,7 @@ def test_a_ball_on_the_touchline_is_kicked_along_it():
     body = LineUpAndKick().tick(board(pos, ball=ball)).body
     assert (body.actionType, body.foot) == (KICK, robot.Foot.LEFT)
 
+
 def test_a_ball_in_the_own_corner_is_lined_up_from_where_the_approach_ends():
     # The approach's target, behind the ball, lies beyond both lines; the walk stops at the
     # slack. From there the ball must be ahead and the aim in line, or nobody kicks it.
