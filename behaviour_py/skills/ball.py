@@ -46,7 +46,8 @@ def kickAim(ballX, ballY, goalX, goalY, behind):
         return goalX, goalY
     dirX, dirY = dx / dist, dy / dist
     turned = False
-    limitedY = limitAim(dirY, ballY, FIELD_HALF_WIDTH + FIELD_EDGE_SLACK, behind)
+    limitY = FIELD_HALF_WIDTH + FIELD_EDGE_SLACK
+    limitedY = limitAim(dirY, ballY, limitY, behind)
     if limitedY != dirY:
         dirY = limitedY
         dirX = math.copysign(math.sqrt(max(0.0, 1.0 - dirY * dirY)), dirX)
@@ -56,7 +57,7 @@ def kickAim(ballX, ballY, goalX, goalY, behind):
         dirX = limitedX
         dirY = math.copysign(math.sqrt(max(0.0, 1.0 - dirX * dirX)), dirY)
         turned = True
-        if limitAim(dirY, ballY, FIELD_HALF_WIDTH + FIELD_EDGE_SLACK, behind) != dirY:
+        if limitAim(dirY, ballY, limitY, behind) != dirY:  # the touchline again: a corner
             dirX, dirY = cornerAim(ballX, ballY, behind)
     if not turned:
         return goalX, goalY

@@ -99,22 +99,20 @@ void Referee::check_ball_out(const RefereeInput& in, RefereeDecision& d) const {
 }
 
 // Candidates every kClearStepMm along x, nearest first, up to the goal lines; none clear
-// within kClearMaxMm either way leaves the spot as it is (a crowd the ball cannot avoid).
+// within kClearSteps steps either way (2 m) leaves the spot as it is (a crowd the ball
+// cannot avoid).
 void Referee::clear_of_robots(const RefereeInput& in, float toward_x, BallPlacement& put) const {
-  constexpr float kClearStepMm = 50.f, kClearMaxMm = 2000.f;
+  constexpr float kClearStepMm = 50.f;
+  constexpr int kClearSteps = 40;
   const float clearance = rules_.ball_out_clearance_mm, hl = field_.half_length();
   if (clearance <= 0.f) return;
   const auto clear = [&](float x) {
-    for (const RobotOnField& r : in.robots)
-      if (std::hypot(r.body.x_mm - x, r.body.y_mm - put.y_mm) < clearance) return false;
-    return true;
+    if (std::fabs(x) > hl) return false;
+    return std::none_of(in.robots.begin(), in.robots.end(), [&](const RobotOnField& r) {
+      return std::hypot(r.body.x_mm - x, r.body.y_mm - put.y_mm) < clearance;
+    });
   };
-  for (float shift = 0.f; shift <= kClearMaxMm; shift += kClearStepMm)
-    for (const float x : {put.x_mm + toward_x * shift, put.x_mm - toward_x * shift})
-      if (std::fabs(x) <= hl && clear(x)) {
-        put.x_mm = x;
-        return;
-      }
+  put.x_mm = detail::nearest_along_x(put.x_mm, toward_x, kClearStepMm, kClearSteps, clear).value_or(put.x_mm);
 }
 
 // The watch restarts whenever PLAYING starts (kick-off) and while a set play runs (it has

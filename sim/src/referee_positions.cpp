@@ -74,19 +74,15 @@ Pose2D Referee::free_reentry_position(RobotId id, const BallTruth& ball, const R
   const float step = contact + 100.f;
   const float to_centre = id.team == 0 ? 1.f : -1.f;
   const float hl = field_.half_length();
-  const auto free = [&](const Pose2D& p) {
+  const auto free = [&](float x) {
+    if (x * to_centre > 0 || std::fabs(x) > hl) return false; // off the own half
     return std::none_of(robots.begin(), robots.end(), [&](const RobotOnField& r) {
-      return r.id != id && !penalised(r.id) && std::hypot(r.body.x_mm - p.x_mm, r.body.y_mm - p.y_mm) < contact;
+      return r.id != id && !penalised(r.id) && std::hypot(r.body.x_mm - x, r.body.y_mm - spot.y_mm) < contact;
     });
   };
-  for (int k = 0; k <= 4 * kMaxTeamSize; ++k) {
-    const float offset = static_cast<float>((k + 1) / 2) * (k % 2 == 1 ? 1.f : -1.f) * step;
-    Pose2D p = spot;
-    p.x_mm += to_centre * offset;
-    if (p.x_mm * to_centre > 0 || std::fabs(p.x_mm) > hl) continue; // off the own half
-    if (free(p)) return p;
-  }
-  return spot;
+  Pose2D p = spot;
+  p.x_mm = detail::nearest_along_x(spot.x_mm, to_centre, step, 2 * kMaxTeamSize, free).value_or(spot.x_mm);
+  return p;
 }
 
 // SPL manual placement: at SET, a robot not in a legal kick-off position is put on its

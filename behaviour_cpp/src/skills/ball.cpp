@@ -42,7 +42,8 @@ FieldPointExact kickAim(double ballX, double ballY, double goalX, double goalY, 
   if (dist < MIN_GOAL_DIST) return {goalX, goalY};
   double dirX = dx / dist, dirY = dy / dist;
   bool turned = false;
-  const double limitedY = limitAim(dirY, ballY, double{FIELD_HALF_WIDTH} + double{FIELD_EDGE_SLACK}, behind);
+  const double limitY = double{FIELD_HALF_WIDTH} + double{FIELD_EDGE_SLACK};
+  const double limitedY = limitAim(dirY, ballY, limitY, behind);
   if (limitedY != dirY) {
     dirY = limitedY;
     dirX = std::copysign(std::sqrt(std::max(0.0, 1.0 - dirY * dirY)), dirX);
@@ -53,7 +54,7 @@ FieldPointExact kickAim(double ballX, double ballY, double goalX, double goalY, 
     dirX = limitedX;
     dirY = std::copysign(std::sqrt(std::max(0.0, 1.0 - dirX * dirX)), dirY);
     turned = true;
-    if (limitAim(dirY, ballY, double{FIELD_HALF_WIDTH} + double{FIELD_EDGE_SLACK}, behind) != dirY) {
+    if (limitAim(dirY, ballY, limitY, behind) != dirY) { // the touchline again: a corner
       const FieldPointExact corner = cornerAim(ballX, ballY, behind);
       dirX = corner.x;
       dirY = corner.y;
