@@ -45,6 +45,7 @@ SCENARIOS = [
     ({"skill": "HeadScan"}, (2500, 1500), 6, THREE, []),
     ({"skill": "Team"}, (0, 0), 24, FOUR_A_SIDE, QUICK_KICKOFF),
     ({"skill": "Team"}, (-1500, 1000), 24, FOUR_A_SIDE, QUICK_KICKOFF),
+    ({"skill": "Team"}, (1000, 1990), 28, FOUR_A_SIDE, QUICK_KICKOFF),  # by the touchline: balls out, put back
     ({"skill": "Striker"}, (800, 400), 16, THREE, QUICK_KICKOFF),
     ({"skill": "Goalie"}, (-2200, 300), 16, THREE, QUICK_KICKOFF),
     ({"skill": "Midfielder"}, (1600, -700), 16, THREE, QUICK_KICKOFF),

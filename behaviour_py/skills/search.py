@@ -1,9 +1,17 @@
 """Search: the body of a field player (not the goalie) that has not seen the ball for
 SEARCH_TURN_FRAMES, so that a lost robot never turns on the spot for long (issue #17; the
-thesis saw supporters spinning when lost). Reads the Blackboard's localisation, gameController,
-receiver and motion (its touches, through avoid's keepClear and GoToPose's Avoid); writes
-nothing.
+thesis saw supporters spinning when lost), or has not seen it since the referee put it back
+after it left the field. Reads the Blackboard's localisation, gameController, receiver and
+motion (its touches, through avoid's keepClear and GoToPose's Avoid); writes nothing.
 
+  drop-in:    the GameController's dropInTime started again (SPL 2011: a ball that left the
+              field was put back) while this robot did not see the ball, at most
+              DROP_IN_FRESH_S ago, and it has not seen the ball since: walk to where the role
+              stands for the ball where the rules put it (dropInSpot, from the robot's last
+              sighting; Team points the head there too). Without it a robot looked where the
+              ball left, often facing away from where it lay: in C++ matches (cpp:Team v
+              cpp:Striker, seeds 1-6) the referee put the ball back 76 times a match, and it
+              lay there 4.9 s (median) before it moved.
   team ball:  a teammate saw the ball recently (its message says so, is at most
               MESSAGE_STALE_US old, and it is not penalised): walk to where the role stands
               for that ball (the striker behind it, a supporter at its algorithm's target),
@@ -25,9 +33,10 @@ import robot
 
 from .avoid import keepClear
 from .ball import BEHIND_BALL_DIST, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, kickAim, pointBehindBall
-from .field import distance
+from .field import FIELD_HALF_LENGTH, FIELD_HALF_WIDTH, distance
 from .goalie import GOALIE_HOME_X
 from .go_to_pose import GoToPose
+from .robot_limits import clamp
 from .supporter import TUNED, defenderTarget, midfielderTarget, supporterTarget
 from .team_comm import MESSAGE_STALE_US, ROLE_DEFENDER, ROLE_MIDFIELDER, ROLE_STRIKER, decodeMessage
 
@@ -44,6 +53,9 @@ MIDFIELDER_FIRST_SPOT = 1        # ... the midfielder its own side ...
 DEFENDER_FIRST_SPOT = 2          # ... and the defender the own half
 BALL_AT_FEET_DIST = 250.0        # mm: a lost ball last seen this near lies at the feet, so ...
 SEARCH_BACK_OFF_SPEED = 150.0    # mm/s: ... the robot steps away from it this fast, not turning
+DROP_IN_SETBACK = 1000.0         # mm: SPL 2011 puts a ball that left the field back this far towards
+                                 # the goal of the team that put it out
+DROP_IN_FRESH_S = 8              # s: a ball put back this recently is looked for where it was put
 
 
 def homePosition(role, supporters):
@@ -96,16 +108,54 @@ def searchSpot(role, walk):
     return (sign * SEARCH_SPOT_X, 0.0) if spot % 2 == 0 else (0.0, sign * SEARCH_SPOT_Y)
 
 
+def dropInSpot(ballX, ballY, dropInTeam, ourTeam):
+    """(x, y) where the SPL 2011 rules put back a ball last seen at (ballX, ballY) that then
+    left the field: on the line it left by (the one it lies farther beyond, or nearer inside),
+    DROP_IN_SETBACK along x towards the goal of the team dropInTeam (ours, ourTeam, defends
+    -x; -1: not moved), within the goal lines."""
+    setback = -DROP_IN_SETBACK if dropInTeam == ourTeam else DROP_IN_SETBACK if dropInTeam == 1 - ourTeam else 0.0
+    sideX = -1.0 if ballX < 0.0 else 1.0
+    sideY = -1.0 if ballY < 0.0 else 1.0
+    if abs(ballY) - FIELD_HALF_WIDTH > abs(ballX) - FIELD_HALF_LENGTH:
+        return clamp(ballX + setback, -FIELD_HALF_LENGTH, FIELD_HALF_LENGTH), sideY * FIELD_HALF_WIDTH
+    return (clamp(sideX * FIELD_HALF_LENGTH + setback, -FIELD_HALF_LENGTH, FIELD_HALF_LENGTH),
+            clamp(ballY, -FIELD_HALF_WIDTH, FIELD_HALF_WIDTH))
+
+
 class Search:
     def __init__(self, supporters=TUNED):
         """supporters: the SupporterDef whose targets and homes a lost supporter uses."""
         self.supporters = supporters
-        self.teamBallPose = GoToPose()
+        self.lastDropInTime = -1  # dropInTime at the last tick
+        self.dropIn = None  # (x, y) where the ball was put back, until it is seen (the last tick's)
+        self.ballPose = GoToPose()
         self.spotPose = GoToPose()
+
+    def updateDropIn(self, blackboard):
+        """Latches dropIn when the GameController's dropInTime starts again (a ball put back)
+        while this robot does not see the ball; clears it once the ball is seen, or the
+        drop-in is DROP_IN_FRESH_S old."""
+        gc = blackboard.gameController
+        localisation = blackboard.localisation
+        seen = localisation.ballLostCount == 0
+        if gc.dropInTime >= 0 and (self.lastDropInTime < 0 or gc.dropInTime < self.lastDropInTime) and not seen:
+            self.dropIn = dropInSpot(localisation.ballPos.x, localisation.ballPos.y, gc.dropInTeam, gc.team)
+        self.lastDropInTime = gc.dropInTime
+        if seen or gc.dropInTime < 0 or gc.dropInTime >= DROP_IN_FRESH_S:
+            self.dropIn = None
+
+    def toBall(self, blackboard, role, ballX, ballY):
+        """The walk to where the role stands for a ball at (ballX, ballY) (teamBallTarget)."""
+        robotY = blackboard.localisation.robotPos.y
+        self.ballPose.setTarget(*teamBallTarget(role, ballX, ballY, robotY, self.supporters))
+        return self.ballPose.tick(blackboard).body
 
     def tick(self, blackboard, role):
         """The body request of a field player of `role` searching, or None while it has not
         lost the ball for long enough, or plays the role's own skill (a supporter walking home)."""
+        self.updateDropIn(blackboard)
+        if self.dropIn is not None:
+            return self.toBall(blackboard, role, *self.dropIn)
         lost = blackboard.localisation.ballLostCount - SEARCH_TURN_FRAMES
         if lost <= 0:
             return None
@@ -117,8 +167,7 @@ class Search:
             return actioncommand.walk(forward, left)
         ball = teamBall(blackboard.gameController.playerNumber, blackboard.receiver.messages, blackboard.utime)
         if ball is not None:
-            self.teamBallPose.setTarget(*teamBallTarget(role, ball[0], ball[1], pos.y, self.supporters))
-            return self.teamBallPose.tick(blackboard).body
+            return self.toBall(blackboard, role, *ball)
         cycle, frame = divmod(lost - 1, SEARCH_CYCLE_FRAMES)
         if role != ROLE_STRIKER and cycle == 0:
             homeX, homeY = homePosition(role, self.supporters)

@@ -1,8 +1,9 @@
 """Team: the whole robot for a match. Game states, team messages, roles.
 
-Every tick the head runs LandmarkGlance (LookForBall with glances at landmarks) and, every
-MESSAGE_EVERY_FRAMES frames (counted by its own ticks, never wall time), the request carries this
-robot's team message. The body:
+Every tick the head runs LandmarkGlance (LookForBall with glances at landmarks), or in PLAYING
+looks where a ball lies that the referee put back and this field player has not seen since
+(search.py's drop-in); every MESSAGE_EVERY_FRAMES frames (counted by its own ticks, never wall
+time), the request carries this robot's team message. The body:
 penalised or fallen: stand (it gets up by itself); INITIAL, STANDBY, SET, FINISHED: stand; READY: walk
 to the player number's kick-off position (a fixed legal formation in the own half, outside
 the centre circle, but for player 2 when its team kicks off: the ball is then before its
@@ -24,6 +25,7 @@ from .landmark_glance import LandmarkGlance
 from .search import Search
 from .striker import Striker
 from .supporter import TUNED, Defender, Midfielder
+from .track_ball import lookAt
 from .unstick import Unstick
 from .team_comm import (GOALIE_PLAYER, MESSAGE_EVERY_FRAMES, NO_BALL_DISTANCE, ROLE_DEFENDER, ROLE_GOALIE,
                         ROLE_MIDFIELDER, ROLE_NONE, ROLE_STRIKER, assignRole, encodeMessage, makeTeamInfo, roundMm)
@@ -108,7 +110,12 @@ class Team:
     def tick(self, blackboard):
         self.role = self.chooseRole(blackboard)
         body = self.body(blackboard)
-        head = self.head.tick(blackboard).head
+        # A ball put back unseen is looked for where it was put; else LandmarkGlance.
+        dropIn = self.search.dropIn
+        if dropIn is not None and self.role != ROLE_GOALIE and blackboard.gameController.state == robot.GameState.PLAYING:
+            head = lookAt(robot.toRobotRelative(blackboard.localisation.robotPos, *dropIn))
+        else:
+            head = self.head.tick(blackboard).head
         chest = TEAM_BALL_SEEN_CHEST if ballRecentlySeen(blackboard) else TEAM_BALL_LOST_CHEST
         command = actioncommand.compose(head=head, body=body, leds=actioncommand.leds(chest))
         if self.frame % MESSAGE_EVERY_FRAMES == 0:

@@ -5,12 +5,14 @@ from .camera import pitchToSee
 from .robot_limits import MAX_HEAD_YAW, clamp
 
 
+def lookAt(rr):
+    """The head request that points the camera at `rr` (robot relative), pitched so a ball
+    there lies in the visible range."""
+    return actioncommand.head(clamp(rr.heading, -MAX_HEAD_YAW, MAX_HEAD_YAW), pitchToSee(rr.distance))
+
+
 class TrackBall:
     def tick(self, blackboard):
         # What the camera saw this frame, else localisation's estimate of where it is.
-        if blackboard.vision.ballSeen:
-            ball = blackboard.vision.ball
-        else:
-            ball = blackboard.localisation.ballPosRR
-        yaw = clamp(ball.heading, -MAX_HEAD_YAW, MAX_HEAD_YAW)
-        return actioncommand.compose(head=actioncommand.head(yaw, pitchToSee(ball.distance)))
+        ball = blackboard.vision.ball if blackboard.vision.ballSeen else blackboard.localisation.ballPosRR
+        return actioncommand.compose(head=lookAt(ball))

@@ -4,6 +4,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 
 #include "touchline/angles.hpp"
 
@@ -91,6 +92,16 @@ void check_set_play(int set_play, int team, const std::string& what) {
     throw MalformedMessage(what + ": set_play_team " + std::to_string(team) + " is not 0 or 1");
 }
 
+/// A drop-in's team is 0, 1 or -1 (not known); its age is -1 (none yet) or more, and none
+/// names no team.
+void check_drop_in(int team, int seconds, const std::string& what) {
+  if (team < -1 || team > 1)
+    throw MalformedMessage(what + ": drop_in_team " + std::to_string(team) + " is not 0, 1 or -1");
+  if (seconds < -1) throw MalformedMessage(what + ": drop_in_s " + std::to_string(seconds) + " is below -1");
+  if (seconds == -1 && team != -1)
+    throw MalformedMessage(what + ": drop_in_team " + std::to_string(team) + " without a drop-in (drop_in_s -1)");
+}
+
 } // namespace
 
 std::string act_channel(RobotId id) {
@@ -116,6 +127,8 @@ sense_t to_lcm(const SenseFrame& frame) {
   m.score[1] = static_cast<int8_t>(frame.game.score[1]);
   m.set_play = static_cast<int8_t>(frame.game.set_play);
   m.set_play_team = static_cast<int8_t>(frame.game.set_play_team);
+  m.drop_in_team = static_cast<int8_t>(frame.game.drop_in_team);
+  m.drop_in_s = static_cast<int16_t>(std::min(frame.game.drop_in_s, int{INT16_MAX}));
   m.num_robots = static_cast<int16_t>(frame.robots.size());
   for (const RobotSense& r : frame.robots) {
     robot_sense_t s;
@@ -172,6 +185,7 @@ SenseFrame from_lcm(const sense_t& m) {
   if (m.game_state < 0 || m.game_state > static_cast<int8_t>(GameState::kStandby))
     throw MalformedMessage(what + ": unknown game_state " + std::to_string(m.game_state));
   check_set_play(m.set_play, m.set_play_team, what);
+  check_drop_in(m.drop_in_team, m.drop_in_s, what);
   if (m.kickoff_team < 0 || m.kickoff_team > 1)
     throw MalformedMessage(what + ": kickoff_team " + std::to_string(m.kickoff_team) + " is not 0 or 1");
   if (m.score[0] < 0 || m.score[1] < 0)
@@ -187,6 +201,8 @@ SenseFrame from_lcm(const sense_t& m) {
   frame.game.score = {{m.score[0], m.score[1]}};
   frame.game.set_play = static_cast<SetPlay>(m.set_play);
   frame.game.set_play_team = frame.game.set_play == SetPlay::kNone ? -1 : m.set_play_team;
+  frame.game.drop_in_team = m.drop_in_team;
+  frame.game.drop_in_s = m.drop_in_s;
   std::array<std::array<bool, kMaxTeamSize + 1>, 2> listed{};
   for (const robot_sense_t& s : m.robots) {
     check_id(s.team, s.player, what);

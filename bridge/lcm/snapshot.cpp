@@ -157,6 +157,8 @@ blackboard_snapshot_t to_snapshot(const api::Blackboard& bb, RobotId id, int64_t
   m.score[0] = static_cast<int16_t>(gc.score[0]);
   m.score[1] = static_cast<int16_t>(gc.score[1]);
   m.secs_remaining = gc.secsRemaining;
+  m.drop_in_team = static_cast<int8_t>(gc.dropInTeam);
+  m.drop_in_time = gc.dropInTime;
 
   m.num_messages = static_cast<int16_t>(bb.receiver.messages.size());
   for (const api::TeamMessage& message : bb.receiver.messages) {
@@ -227,6 +229,8 @@ api::Blackboard from_snapshot(const blackboard_snapshot_t& m) {
   gc.penalised = m.penalised;
   gc.score = {{check.range(m.score[0], 0, kNoLimit, "score"), check.range(m.score[1], 0, kNoLimit, "score")}};
   gc.secsRemaining = m.secs_remaining;
+  gc.dropInTeam = check.range(m.drop_in_team, -1, 1, "drop_in_team");
+  gc.dropInTime = check.range(m.drop_in_time, -1, kNoLimit, "drop_in_time");
 
   for (const team_message_t& message : m.messages)
     bb.receiver.messages.push_back({check.range(message.player, 1, kMaxTeamSize, "team message player"),

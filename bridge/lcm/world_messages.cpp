@@ -1,5 +1,8 @@
 #include "touchline/lcm/world_messages.hpp"
 
+#include <algorithm>
+#include <cstdint>
+
 #include "touchline/lcm/codec.hpp"
 
 namespace touchline::transport {
@@ -42,6 +45,8 @@ game_state_t to_msg(const GameInfo& game, int64_t utime, bool finished) {
   msg.score[1] = static_cast<int8_t>(game.score[1]);
   msg.set_play = static_cast<int8_t>(game.set_play);
   msg.set_play_team = static_cast<int8_t>(game.set_play_team);
+  msg.drop_in_team = static_cast<int8_t>(game.drop_in_team);
+  msg.drop_in_s = static_cast<int16_t>(std::min(game.drop_in_s, int{INT16_MAX}));
   return msg;
 }
 

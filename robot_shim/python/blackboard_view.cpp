@@ -195,6 +195,8 @@ PyGetSetDef g_game_controller_fields[] = {
     TL_FIELD(GameControllerBlackboard, kickOffTeam, "the team index (0 or 1) that kicks off"),
     TL_FIELD(GameControllerBlackboard, setPlay, "robot.SetPlay"),
     TL_FIELD(GameControllerBlackboard, setPlayTeam, "the team index taking the set play, -1: none"),
+    TL_FIELD(GameControllerBlackboard, dropInTeam, "the team index whose touch put the last ball out, -1: not known"),
+    TL_FIELD(GameControllerBlackboard, dropInTime, "whole seconds since that ball was put back, -1: none yet"),
     {nullptr, nullptr, nullptr, nullptr, nullptr}};
 
 PyGetSetDef g_receiver_fields[] = {

@@ -47,6 +47,8 @@ void write_game_controller(const SenseFrame& frame, const RobotSense& sense, api
   gc.kickOffTeam = frame.game.kickoff_team;
   gc.setPlay = to_api(frame.game.set_play);
   gc.setPlayTeam = frame.game.set_play_team;
+  gc.dropInTeam = frame.game.drop_in_team;
+  gc.dropInTime = frame.game.drop_in_s;
 }
 
 void write_vision(const SenseFrame& frame, const RobotSense& sense, api::Blackboard& blackboard) {

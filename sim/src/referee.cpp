@@ -60,6 +60,10 @@ RefereeDecision Referee::update(const RefereeInput& in) {
   if (state_ == GameState::kPlaying && !goal) {
     check_set_play_over(in, d);
     if (rules_.ball_out) rules_.set_plays ? award_ball_out(in, d) : check_ball_out(in, d);
+    if (d.ball && d.ball->why == BallPlacement::Why::kBallOut) {
+      drop_in_team_ = in.last_touch_team;
+      drop_in_utime_ = in.utime;
+    }
     if (rules_.game_stuck_s > 0 && state_ == GameState::kPlaying) check_game_stuck(in, d);
   }
   const bool robots_walk = state_ == GameState::kReady || state_ == GameState::kSet ||
@@ -83,6 +87,8 @@ GameInfo Referee::info() const {
   info.score = score_;
   info.set_play = set_play_;
   info.set_play_team = set_play_team_;
+  info.drop_in_team = drop_in_team_;
+  info.drop_in_s = drop_in_utime_ < 0 ? -1 : static_cast<int>((clock_utime_ - drop_in_utime_) / 1000000);
   const int64_t left_us = state_ == GameState::kFinished ? 0 : std::max<int64_t>(0, half_us() - played_us_);
   info.secs_remaining = static_cast<int>((left_us + 999999) / 1000000); // whole seconds, rounded up
   return info;

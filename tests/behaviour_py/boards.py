@@ -14,7 +14,7 @@ TOUCH_SIDES = ("FrontLeft", "FrontRight", "Left", "Right", "Back")  # motion.tou
 
 def board(pos=(0.0, 0.0, 0.0), ball=(1000.0, 0.0), seen=True, lost=0, headYaw=0.0, utime=0,
           state=robot.GameState.PLAYING, player=2, penalised=False, fallen=False, messages=(), sonar=(1.0, 1.0),
-          robots=(), odometry=(0.0, 0.0, 0.0), touch=(), kickOffTeam=0):
+          robots=(), odometry=(0.0, 0.0, 0.0), touch=(), kickOffTeam=0, dropIn=(-1, -1)):
     """The robot at pos (x, y, theta), the ball at the field point `ball`; vision and
     localisation agree on it. seen: vision.ballSeen; lost: localisation.ballLostCount;
     state, player, penalised: gameController; fallen: motion.fallen; messages: receiver
@@ -22,7 +22,7 @@ def board(pos=(0.0, 0.0, 0.0), ball=(1000.0, 0.0), seen=True, lost=0, headYaw=0.
     1000 mm; robots: vision.robots (seenRobot()); odometry: motion.odometry (x, y, theta);
     touch: the touched sectors, of "FrontLeft", "FrontRight", "Left", "Right", "Back"
     (motion.touch*); kickOffTeam: gameController's (this robot's team is 0, as the C++
-    Blackboard's defaults have both)."""
+    Blackboard's defaults have both); dropIn: gameController's (dropInTeam, dropInTime)."""
     robotPos = robot.AbsCoord(*pos)
     ballPos = robot.AbsCoord(ball[0], ball[1], 0.0)
     ballRR = robot.toRobotRelative(robotPos, ballPos.x, ballPos.y)
@@ -35,7 +35,7 @@ def board(pos=(0.0, 0.0, 0.0), ball=(1000.0, 0.0), seen=True, lost=0, headYaw=0.
                                sonarRange_mm=1000.0, odometry=robot.AbsCoord(*odometry),
                                **{"touch" + side: side in touch for side in TOUCH_SIDES}),
         gameController=SimpleNamespace(state=state, team=0, playerNumber=player, penalised=penalised,
-                                       kickOffTeam=kickOffTeam),
+                                       kickOffTeam=kickOffTeam, dropInTeam=dropIn[0], dropInTime=dropIn[1]),
         receiver=SimpleNamespace(messages=list(messages)),
     )
 

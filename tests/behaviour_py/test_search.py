@@ -1,5 +1,6 @@
 """Search (issue #17: no turning on the spot for long when the ball is lost): the team ball,
-the search cycle of turns and walks to search spots; the same hand-worked cases as
+the search cycle of turns and walks to search spots, a ball put back where the rules put it;
+the same hand-worked cases as
 tests/behaviour_cpp/skills/test_search.cpp."""
 import math
 
@@ -8,9 +9,10 @@ import robot
 from boards import board, message
 
 from skills.ball import BEHIND_BALL_DIST, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, kickAim, pointBehindBall
-from skills.field import FIELD_EDGE_SLACK, FIELD_HALF_WIDTH
-from skills.search import (BALL_AT_FEET_DIST, HOME_NEAR_DIST, SEARCH_CYCLE_FRAMES, SEARCH_TURN_FRAMES, SEARCH_TURN_LIMIT_FRAMES,
-                           SEARCH_TURN_SPEED, Search, searchSpot, teamBall, teamBallTarget)
+from skills.field import FIELD_EDGE_SLACK, FIELD_HALF_LENGTH, FIELD_HALF_WIDTH
+from skills.search import (BALL_AT_FEET_DIST, DROP_IN_FRESH_S, DROP_IN_SETBACK, HOME_NEAR_DIST, SEARCH_CYCLE_FRAMES,
+                           SEARCH_TURN_FRAMES, SEARCH_TURN_LIMIT_FRAMES, SEARCH_TURN_SPEED, Search, dropInSpot, searchSpot,
+                           teamBall, teamBallTarget)
 from skills.supporter import THESIS
 from skills.team import Team
 from skills.team_comm import (MESSAGE_STALE_US, NO_BALL_DISTANCE, ROLE_DEFENDER, ROLE_MIDFIELDER, ROLE_STRIKER,
@@ -139,3 +141,60 @@ def test_the_team_searches_but_the_goalie_keeps_its_box():
     assert Team(ROLE_STRIKER).tick(board((0.0, 0.0, 0.0), **lost)).body.turn == pytest.approx(-SEARCH_TURN_SPEED)
     command = Team().tick(board((-2700.0, 0.0, 0.0), player=1, **lost))  # the goalie at home: stands
     assert command.body.actionType == STAND
+
+
+def test_a_ball_put_back_lies_on_the_line_it_left_by_set_back_towards_the_goal_of_who_put_it_out():
+    # Over the touchline (it lies farther beyond it than beyond the goal line), by us: towards
+    # our goal (-x); by them: towards theirs; not known: where it crossed.
+    assert dropInSpot(500.0, FIELD_HALF_WIDTH + 80.0, 0, 0) == (500.0 - DROP_IN_SETBACK, FIELD_HALF_WIDTH)
+    assert dropInSpot(500.0, -FIELD_HALF_WIDTH - 80.0, 1, 0) == (500.0 + DROP_IN_SETBACK, -FIELD_HALF_WIDTH)
+    assert dropInSpot(500.0, FIELD_HALF_WIDTH - 30.0, -1, 0) == (500.0, FIELD_HALF_WIDTH)  # last seen just inside
+    assert dropInSpot(500.0, FIELD_HALF_WIDTH + 80.0, 1, 1) == (500.0 - DROP_IN_SETBACK, FIELD_HALF_WIDTH)  # team 1's "us"
+    # Over a goal line: set back from it, within the goal lines.
+    assert dropInSpot(FIELD_HALF_LENGTH + 100.0, 700.0, 1, 0) == (FIELD_HALF_LENGTH, 700.0)
+    assert dropInSpot(FIELD_HALF_LENGTH + 100.0, 700.0, 0, 0) == (FIELD_HALF_LENGTH - DROP_IN_SETBACK, 700.0)
+    assert dropInSpot(-FIELD_HALF_LENGTH - 100.0, -2100.0, 1, 0) == (-FIELD_HALF_LENGTH + DROP_IN_SETBACK, -FIELD_HALF_WIDTH)
+    # Near a corner along the touchline, still within the goal lines.
+    assert dropInSpot(FIELD_HALF_LENGTH - 200.0, FIELD_HALF_WIDTH + 300.0, 1, 0) == (FIELD_HALF_LENGTH, FIELD_HALF_WIDTH)
+
+
+def test_a_robot_that_did_not_see_the_ball_put_back_walks_and_looks_to_where_the_rules_put_it():
+    # Last seen rolling over the left touchline at x = 500; we put it out: it lies at x = -500,
+    # behind the robot, which faces where the ball left.
+    pos = (300.0, 1700.0, 0.5)
+    out = dict(ball=(500.0, FIELD_HALF_WIDTH + 50.0), seen=False, lost=10)
+    search = Search()
+    assert search.tick(board(pos, dropIn=(-1, -1), **out), ROLE_MIDFIELDER) is None  # no drop-in yet
+    body = search.tick(board(pos, dropIn=(0, 0), **out), ROLE_MIDFIELDER)
+    assert search.dropIn == (500.0 - DROP_IN_SETBACK, FIELD_HALF_WIDTH)
+    assert body.actionType == WALK and body.turn > 0.0  # turning round to it
+    # It keeps the spot while the drop-in is young and the ball unseen, ...
+    assert search.tick(board(pos, dropIn=(0, DROP_IN_FRESH_S - 1), **out), ROLE_MIDFIELDER) is not None
+    assert search.dropIn is not None
+    # ... and forgets it once it sees the ball (the role's own skill plays), or when it is old.
+    assert search.tick(board(pos, dropIn=(0, 1), ball=(-500.0, FIELD_HALF_WIDTH), lost=0), ROLE_MIDFIELDER) is None
+    assert search.dropIn is None
+    search = Search()
+    search.tick(board(pos, dropIn=(0, 0), **out), ROLE_MIDFIELDER)
+    assert search.tick(board(pos, dropIn=(0, DROP_IN_FRESH_S), **out), ROLE_MIDFIELDER) is None
+    assert search.dropIn is None
+    # The Team looks there too: the spot is behind-left, and so is the head.
+    pos = (-200.0, 1600.0, 0.6)
+    head = Team(ROLE_STRIKER).tick(board(pos, dropIn=(0, 0), **out)).head
+    spot = robot.toRobotRelative(robot.AbsCoord(*pos), 500.0 - DROP_IN_SETBACK, FIELD_HALF_WIDTH)
+    assert head.yaw == pytest.approx(spot.heading) and head.yaw > 1.5
+
+
+def test_a_robot_that_sees_the_ball_put_back_or_another_drop_in_plays_on():
+    # It saw the ball as it was put back: its own skill plays the real ball.
+    search = Search()
+    assert search.tick(board(ball=(-500.0, FIELD_HALF_WIDTH), lost=0, dropIn=(0, 0)), ROLE_STRIKER) is None
+    assert search.dropIn is None
+    # The same drop-in told again (dropInTime not started again) keeps the spot latched from
+    # the sighting before it, wherever the ball estimate goes since.
+    search = Search()
+    search.tick(board(seen=False, lost=10, dropIn=(1, 3)), ROLE_STRIKER)
+    assert search.dropIn is not None
+    search.tick(board(seen=False, lost=10, ball=(0.0, 0.0), dropIn=(1, 3)), ROLE_STRIKER)
+    assert search.dropIn is not None  # the one it latched, kept
+    assert search.dropIn == dropInSpot(1000.0, 0.0, 1, 0)

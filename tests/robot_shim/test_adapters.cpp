@@ -48,6 +48,17 @@ TEST(GameControllerAdapter, EverySetPlayAndItsTeamReachTheBlackboard) {
   const api::GameControllerBlackboard none = written(GameInfo{});
   EXPECT_EQ(none.setPlay, api::SetPlay::NONE);
   EXPECT_EQ(none.setPlayTeam, -1);
+  EXPECT_EQ(none.dropInTeam, -1);
+  EXPECT_EQ(none.dropInTime, -1);
+}
+
+TEST(GameControllerAdapter, TheLastDropInReachesTheBlackboard) {
+  GameInfo game;
+  game.drop_in_team = 1;
+  game.drop_in_s = 7;
+  const api::GameControllerBlackboard gc = written(game);
+  EXPECT_EQ(gc.dropInTeam, 1);
+  EXPECT_EQ(gc.dropInTime, 7);
 }
 
 TEST(GameControllerAdapter, WhoTheRobotIsAndTheScoreReachTheBlackboard) {

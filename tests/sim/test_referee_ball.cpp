@@ -107,6 +107,23 @@ TEST_F(BallOut, InsetPutsItInsideTheLine) {
   expect_ball(put_back(3040.f, 1500.f, 1), 2600.f, 1500.f);
 }
 
+TEST_F(BallOut, TheGameControllerTellsWhoseBallWentOutAndHowLongAgo) {
+  // As the SPL 2011 GameController's dropInTeam and dropInTime: none before the first.
+  start_playing();
+  EXPECT_EQ(ref().info().drop_in_team, -1);
+  EXPECT_EQ(ref().info().drop_in_s, -1);
+  put_back(500.f, 2040.f, 1);
+  EXPECT_EQ(ref().info().drop_in_team, 1);
+  EXPECT_EQ(ref().info().drop_in_s, 0);
+  put_ball(0.f, 0.f);
+  update_at(now_s + 2.5);
+  EXPECT_EQ(ref().info().drop_in_s, 2); // whole seconds
+  now_s += 3;
+  put_back(500.f, -2040.f, -1); // a ball nobody was seen to touch: the team is not known
+  EXPECT_EQ(ref().info().drop_in_team, -1);
+  EXPECT_EQ(ref().info().drop_in_s, 0);
+}
+
 TEST_F(RefereeTest, BallOnTheTouchlineIsStillIn) {
   start_playing();
   put_ball(500.f, 2032.5f); // its edge on the line's outer edge

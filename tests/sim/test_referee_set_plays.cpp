@@ -44,6 +44,7 @@ TEST_F(SetPlays, OverATouchlineTheOpponentsOfTheLastToucherKickItInWhereItLeft) 
   expect_set_play(ball_out_at(500.f, 3060.f, 0), SetPlay::kKickIn, 1, 500.f, 3000.f);
   EXPECT_EQ(ref().info().set_play, SetPlay::kKickIn);
   EXPECT_EQ(ref().info().set_play_team, 1);
+  EXPECT_EQ(ref().info().drop_in_s, -1); // a set play is no drop-in: the GameController tells it as the set play
   // Traced back along its path: moving (-400, -100) mm/s it is 60 mm past y = -3000, so it
   // crossed 0.6 s ago, 240 mm further +x: at x = -900.
   expect_set_play(ball_out_at(-1140.f, -3060.f, 1, -400.f, -100.f), SetPlay::kKickIn, 0, -900.f, -3000.f);

@@ -1,5 +1,6 @@
 #include "touchline/behaviour/skills/search.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <tuple>
 #include <utility>
@@ -57,10 +58,37 @@ FieldPoint searchSpot(int role, int walk) {
   return spot % 2 == 0 ? FieldPoint{sign * SEARCH_SPOT_X, 0.f} : FieldPoint{0.f, sign * SEARCH_SPOT_Y};
 }
 
+FieldPoint dropInSpot(float ballX, float ballY, int dropInTeam, int ourTeam) {
+  const float setback = dropInTeam == ourTeam ? -DROP_IN_SETBACK : dropInTeam == 1 - ourTeam ? DROP_IN_SETBACK : 0.f;
+  const float sideX = ballX < 0.f ? -1.f : 1.f, sideY = ballY < 0.f ? -1.f : 1.f;
+  if (std::fabs(ballY) - FIELD_HALF_WIDTH > std::fabs(ballX) - FIELD_HALF_LENGTH)
+    return {std::clamp(ballX + setback, -FIELD_HALF_LENGTH, FIELD_HALF_LENGTH), sideY * FIELD_HALF_WIDTH};
+  return {std::clamp(sideX * FIELD_HALF_LENGTH + setback, -FIELD_HALF_LENGTH, FIELD_HALF_LENGTH),
+          std::clamp(ballY, -FIELD_HALF_WIDTH, FIELD_HALF_WIDTH)};
+}
+
+void Search::updateDropIn(const Blackboard& blackboard) {
+  const GameControllerBlackboard& gc = blackboard.gameController;
+  const LocalisationBlackboard& localisation = blackboard.localisation;
+  const bool seen = localisation.ballLostCount == 0;
+  if (gc.dropInTime >= 0 && (lastDropInTime_ < 0 || gc.dropInTime < lastDropInTime_) && !seen)
+    dropIn_ = dropInSpot(localisation.ballPos.x, localisation.ballPos.y, gc.dropInTeam, gc.team);
+  lastDropInTime_ = gc.dropInTime;
+  if (seen || gc.dropInTime < 0 || gc.dropInTime >= DROP_IN_FRESH_S) dropIn_.reset();
+}
+
+ActionCommand::Body Search::toBall(const Blackboard& blackboard, int role, FieldPoint ball) {
+  const AbsCoord target = teamBallTarget(role, ball.x, ball.y, blackboard.localisation.robotPos.y, supporters_);
+  ballPose_.setTarget(target.x, target.y, target.theta);
+  return ballPose_.tick(blackboard).body;
+}
+
 std::optional<ActionCommand::Body> Search::tick(const Blackboard& blackboard, int role) {
+  const AbsCoord pos = blackboard.localisation.robotPos;
+  updateDropIn(blackboard);
+  if (dropIn_) return toBall(blackboard, role, *dropIn_);
   const int lost = blackboard.localisation.ballLostCount - SEARCH_TURN_FRAMES;
   if (lost <= 0) return std::nullopt;
-  const AbsCoord pos = blackboard.localisation.robotPos;
   const RRCoord atFeet = blackboard.localisation.ballPosRR;
   if (atFeet.distance < BALL_AT_FEET_DIST) {
     const WalkVelocity away = keepClear(blackboard, -SEARCH_BACK_OFF_SPEED * std::cos(atFeet.heading),
@@ -68,11 +96,8 @@ std::optional<ActionCommand::Body> Search::tick(const Blackboard& blackboard, in
     return actioncommand::walk(away.forward, away.left, 0.f);
   }
   const GameControllerBlackboard& gc = blackboard.gameController;
-  if (const auto ball = teamBall(gc.playerNumber, blackboard.receiver.messages, blackboard.utime)) {
-    const AbsCoord target = teamBallTarget(role, ball->x, ball->y, pos.y, supporters_);
-    teamBallPose_.setTarget(target.x, target.y, target.theta);
-    return teamBallPose_.tick(blackboard).body;
-  }
+  if (const auto ball = teamBall(gc.playerNumber, blackboard.receiver.messages, blackboard.utime))
+    return toBall(blackboard, role, *ball);
   const int cycle = (lost - 1) / SEARCH_CYCLE_FRAMES;
   const int frame = (lost - 1) % SEARCH_CYCLE_FRAMES;
   if (role != ROLE_STRIKER && cycle == 0) {

@@ -2,6 +2,7 @@
 
 #include "touchline/behaviour/skills/actioncommand.hpp"
 #include "touchline/behaviour/skills/ball.hpp"
+#include "touchline/behaviour/skills/track_ball.hpp"
 
 namespace touchline::behaviour::skills {
 
@@ -42,7 +43,11 @@ Team::Team(int fixedRole, const std::optional<std::string>& policy, const Suppor
 ActionCommand::All Team::tick(const Blackboard& blackboard) {
   role_ = chooseRole(blackboard);
   const ActionCommand::Body bodyRequest = body(blackboard);
-  const ActionCommand::Head head = head_.tick(blackboard).head;
+  // A ball put back unseen is looked for where it was put; else LandmarkGlance.
+  const auto& dropIn = search_.dropIn();
+  const bool lookAtDropIn = dropIn && role_ != ROLE_GOALIE && blackboard.gameController.state == GameState::PLAYING;
+  const ActionCommand::Head head = lookAtDropIn ? lookAt(toRobotRelative(blackboard.localisation.robotPos, dropIn->x, dropIn->y))
+                                                : head_.tick(blackboard).head;
   const int32_t chest = ballRecentlySeen(blackboard) ? TEAM_BALL_SEEN_CHEST : TEAM_BALL_LOST_CHEST;
   ActionCommand::All command = actioncommand::compose(head, bodyRequest, actioncommand::leds(chest));
   if (frame_ % MESSAGE_EVERY_FRAMES == 0) command.teamMessage = encodeMessage(messageInfo(blackboard, role_));

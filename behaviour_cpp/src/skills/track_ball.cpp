@@ -8,11 +8,14 @@ namespace touchline::behaviour::skills {
 
 using namespace api;
 
+ActionCommand::Head lookAt(const RRCoord& rr) {
+  return actioncommand::head(clamp(rr.heading, -MAX_HEAD_YAW, MAX_HEAD_YAW), pitchToSee(rr.distance));
+}
+
 ActionCommand::All TrackBall::tick(const Blackboard& blackboard) {
   // What the camera saw this frame, else localisation's estimate of where it is.
-  const RRCoord ball = blackboard.vision.ballSeen ? blackboard.vision.ball : blackboard.localisation.ballPosRR;
-  const float yaw = clamp(ball.heading, -MAX_HEAD_YAW, MAX_HEAD_YAW);
-  return actioncommand::compose(actioncommand::head(yaw, pitchToSee(ball.distance)));
+  return actioncommand::compose(lookAt(blackboard.vision.ballSeen ? blackboard.vision.ball
+                                                                  : blackboard.localisation.ballPosRR));
 }
 
 } // namespace touchline::behaviour::skills

@@ -154,6 +154,11 @@ struct GameInfo {
   std::array<int, 2> score{{0, 0}};
   SetPlay set_play = SetPlay::kNone; ///< the set play under way (PLAYING only)
   int set_play_team = -1;            ///< the team taking it, 0 or 1; -1 with kNone
+  /// The last ball put back after leaving the field (SPL 2011, without set plays: the
+  /// GameController's dropInTeam and dropInTime): the team whose touch put it out, 0 or 1
+  /// (-1: not known), and whole seconds since (-1: none yet).
+  int drop_in_team = -1;
+  int drop_in_s = -1;
 };
 
 /// Which sides of a robot other robots touch: where a NAO feels a contact, its two foot

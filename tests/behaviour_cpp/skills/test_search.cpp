@@ -1,6 +1,6 @@
 // Search (issue #17: no turning on the spot for long when the ball is lost): the team ball,
-// the search cycle of turns and walks to search spots; the same hand-worked cases as
-// tests/behaviour_py/test_search.py.
+// the search cycle of turns and walks to search spots, a ball put back where the rules put
+// it; the same hand-worked cases as tests/behaviour_py/test_search.py.
 #include "touchline/behaviour/skills/search.hpp"
 
 #include <cmath>
@@ -45,6 +45,20 @@ void expectPose(const AbsCoord& p, float x, float y, float theta) {
 Blackboard lostBoard(AbsCoord pos, float ballX, float ballY, int lost, std::vector<TeamMessage> messages = {}) {
   return teamBoard(pos, ballX, ballY, false, SEARCH_TURN_FRAMES + lost, GameState::PLAYING, 2, false, false,
                    std::move(messages), NOW);
+}
+
+/// A robot at pos that last saw the ball at (ballX, ballY) `lost` frames ago, told of a drop-in
+/// (dropInTeam, dropInTime); lost 0: it sees the ball there.
+Blackboard dropInBoard(AbsCoord pos, float ballX, float ballY, int lost, int dropInTeam, int dropInTime) {
+  Blackboard board = teamBoard(pos, ballX, ballY, lost == 0, lost);
+  board.gameController.dropInTeam = dropInTeam;
+  board.gameController.dropInTime = dropInTime;
+  return board;
+}
+
+void expectSpot(FieldPoint spot, float x, float y) {
+  EXPECT_EQ(spot.x, x);
+  EXPECT_EQ(spot.y, y);
 }
 
 } // namespace
@@ -180,4 +194,69 @@ TEST(Search, TheTeamSearchesButTheGoalieKeepsItsBox) {
   Blackboard board = lostBoard({-2700.f, 0.f, 0.f}, 0.f, -1000.f, 1);
   board.gameController.playerNumber = 1; // the goalie at home: stands
   EXPECT_EQ(goalie.tick(board).body.actionType, AT::STAND);
+}
+
+TEST(Search, ABallPutBackLiesOnTheLineItLeftBySetBackTowardsTheGoalOfWhoPutItOut) {
+  // Over the touchline (it lies farther beyond it than beyond the goal line), by us: towards
+  // our goal (-x); by them: towards theirs; not known: where it crossed.
+  expectSpot(dropInSpot(500.f, FIELD_HALF_WIDTH + 80.f, 0, 0), 500.f - DROP_IN_SETBACK, FIELD_HALF_WIDTH);
+  expectSpot(dropInSpot(500.f, -FIELD_HALF_WIDTH - 80.f, 1, 0), 500.f + DROP_IN_SETBACK, -FIELD_HALF_WIDTH);
+  expectSpot(dropInSpot(500.f, FIELD_HALF_WIDTH - 30.f, -1, 0), 500.f, FIELD_HALF_WIDTH); // last seen just inside
+  expectSpot(dropInSpot(500.f, FIELD_HALF_WIDTH + 80.f, 1, 1), 500.f - DROP_IN_SETBACK, FIELD_HALF_WIDTH); // team 1's "us"
+  // Over a goal line: set back from it, within the goal lines.
+  expectSpot(dropInSpot(FIELD_HALF_LENGTH + 100.f, 700.f, 1, 0), FIELD_HALF_LENGTH, 700.f);
+  expectSpot(dropInSpot(FIELD_HALF_LENGTH + 100.f, 700.f, 0, 0), FIELD_HALF_LENGTH - DROP_IN_SETBACK, 700.f);
+  expectSpot(dropInSpot(-FIELD_HALF_LENGTH - 100.f, -2100.f, 1, 0), -FIELD_HALF_LENGTH + DROP_IN_SETBACK,
+             -FIELD_HALF_WIDTH);
+  // Near a corner along the touchline, still within the goal lines.
+  expectSpot(dropInSpot(FIELD_HALF_LENGTH - 200.f, FIELD_HALF_WIDTH + 300.f, 1, 0), FIELD_HALF_LENGTH, FIELD_HALF_WIDTH);
+}
+
+TEST(Search, ARobotThatDidNotSeeTheBallPutBackWalksAndLooksToWhereTheRulesPutIt) {
+  // Last seen rolling over the left touchline at x = 500; we put it out: it lies at x = -500,
+  // behind the robot, which faces where the ball left.
+  const AbsCoord pos{300.f, 1700.f, 0.5f};
+  const auto out = [&](int dropInTeam, int dropInTime, AbsCoord at) {
+    return dropInBoard(at, 500.f, FIELD_HALF_WIDTH + 50.f, 10, dropInTeam, dropInTime);
+  };
+  Search search;
+  EXPECT_FALSE(search.tick(out(-1, -1, pos), ROLE_MIDFIELDER)); // no drop-in yet
+  const auto body = search.tick(out(0, 0, pos), ROLE_MIDFIELDER);
+  ASSERT_TRUE(search.dropIn());
+  expectSpot(*search.dropIn(), 500.f - DROP_IN_SETBACK, FIELD_HALF_WIDTH);
+  ASSERT_TRUE(body);
+  EXPECT_EQ(body->actionType, AT::WALK);
+  EXPECT_GT(body->turn, 0.f); // turning round to it
+  // It keeps the spot while the drop-in is young and the ball unseen, ...
+  EXPECT_TRUE(search.tick(out(0, DROP_IN_FRESH_S - 1, pos), ROLE_MIDFIELDER));
+  EXPECT_TRUE(search.dropIn());
+  // ... and forgets it once it sees the ball (the role's own skill plays), or when it is old.
+  EXPECT_FALSE(search.tick(dropInBoard(pos, -500.f, FIELD_HALF_WIDTH, 0, 0, 1), ROLE_MIDFIELDER));
+  EXPECT_FALSE(search.dropIn());
+  Search aged;
+  aged.tick(out(0, 0, pos), ROLE_MIDFIELDER);
+  EXPECT_FALSE(aged.tick(out(0, DROP_IN_FRESH_S, pos), ROLE_MIDFIELDER));
+  EXPECT_FALSE(aged.dropIn());
+  // The Team looks there too: the spot is behind-left, and so is the head.
+  const AbsCoord turned{-200.f, 1600.f, 0.6f};
+  const auto head = Team(ROLE_STRIKER).tick(out(0, 0, turned)).head;
+  const RRCoord spot = toRobotRelative(turned, 500.f - DROP_IN_SETBACK, FIELD_HALF_WIDTH);
+  EXPECT_NEAR(head.yaw, spot.heading, 1e-5f);
+  EXPECT_GT(head.yaw, 1.5f);
+}
+
+TEST(Search, ARobotThatSeesTheBallPutBackOrAnotherDropInPlaysOn) {
+  // It saw the ball as it was put back: its own skill plays the real ball.
+  Search search;
+  EXPECT_FALSE(search.tick(dropInBoard({}, -500.f, FIELD_HALF_WIDTH, 0, 0, 0), ROLE_STRIKER));
+  EXPECT_FALSE(search.dropIn());
+  // The same drop-in told again (dropInTime not started again) keeps the spot latched from the
+  // sighting before it, wherever the ball estimate goes since.
+  Search latched;
+  latched.tick(dropInBoard({}, 1000.f, 0.f, 10, 1, 3), ROLE_STRIKER);
+  EXPECT_TRUE(latched.dropIn());
+  latched.tick(dropInBoard({}, 0.f, 0.f, 10, 1, 3), ROLE_STRIKER);
+  ASSERT_TRUE(latched.dropIn()); // the one it latched, kept
+  const FieldPoint first = dropInSpot(1000.f, 0.f, 1, 0);
+  expectSpot(*latched.dropIn(), first.x, first.y);
 }

@@ -1,6 +1,7 @@
 #include "touchline/lcm/codec.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -159,6 +160,8 @@ TEST(Codec, TheGameWithItsSetPlaySurvivesEncodeAndDecode) {
   in.game.set_play_team = 1;
   in.game.kickoff_team = 1;
   in.game.score = {{2, 3}};
+  in.game.drop_in_team = 1;
+  in.game.drop_in_s = 40000; // beyond int16: a whole match without a ball out saturates
   const auto bytes = encode(transport::to_lcm(in));
   sense_t msg;
   transport::decode(bytes.data(), static_cast<int>(bytes.size()), "TL_SENSE", msg);
@@ -168,6 +171,8 @@ TEST(Codec, TheGameWithItsSetPlaySurvivesEncodeAndDecode) {
   EXPECT_EQ(out.game.set_play_team, 1);
   EXPECT_EQ(out.game.kickoff_team, 1);
   EXPECT_EQ(out.game.score, (std::array<int, 2>{{2, 3}}));
+  EXPECT_EQ(out.game.drop_in_team, 1);
+  EXPECT_EQ(out.game.drop_in_s, INT16_MAX);
 }
 
 TEST(Codec, NoSetPlayMeansNoSetPlayTeamWhateverTheWriterPutThere) {
@@ -285,6 +290,9 @@ TEST(Codec, SenseFieldsOutOfRangeAreRejected) {
   rejected("a set play past the penalty kick", [](sense_t& m) { m.set_play = 6; });
   rejected("a set play nobody takes", [](sense_t& m) { m.set_play = 4; m.set_play_team = -1; });
   rejected("a set play for a third team", [](sense_t& m) { m.set_play = 1; m.set_play_team = 2; });
+  rejected("a drop-in by a third team", [](sense_t& m) { m.drop_in_team = 2; m.drop_in_s = 0; });
+  rejected("a drop-in before the match", [](sense_t& m) { m.drop_in_s = -2; });
+  rejected("a drop-in team without a drop-in", [](sense_t& m) { m.drop_in_team = 0; m.drop_in_s = -1; });
   rejected("the same robot twice", [](sense_t& m) { m.robots.push_back(m.robots[0]); m.num_robots = 2; });
   rejected("a sonar reading beyond its range", [](sense_t& m) { m.robots[0].sonar_left = 1.5f; });
   rejected("a goal post that does not exist", [](sense_t& m) { m.robots[0].seen[0].id = 4; });

@@ -42,6 +42,8 @@ api::Blackboard sample() {
   bb.gameController.penalised = true;
   bb.gameController.score = {{2, 1}};
   bb.gameController.secsRemaining = 412;
+  bb.gameController.dropInTeam = 0;
+  bb.gameController.dropInTime = 3;
   bb.behaviour.request.head.yaw = -0.4f;
   bb.behaviour.request.head.isRelative = true;
   bb.behaviour.request.body.actionType = AC::ActionType::KICK;
@@ -97,6 +99,8 @@ TEST(Snapshot, BlackboardSurvivesEncodeAndDecode) {
   EXPECT_TRUE(out.gameController.penalised);
   EXPECT_EQ(out.gameController.score[0], 2);
   EXPECT_EQ(out.gameController.secsRemaining, 412);
+  EXPECT_EQ(out.gameController.dropInTeam, 0);
+  EXPECT_EQ(out.gameController.dropInTime, 3);
   EXPECT_EQ(out.behaviour.request.head.yaw, -0.4f);
   EXPECT_TRUE(out.behaviour.request.head.isRelative);
   EXPECT_EQ(out.behaviour.request.body.actionType, AC::ActionType::KICK);
@@ -123,6 +127,8 @@ TEST(Snapshot, FieldsOutOfRangeAreMalformed) {
   rejected("a third foot", [](blackboard_snapshot_t& m) { m.active.foot = 2; });
   rejected("unknown game state", [](blackboard_snapshot_t& m) { m.game_state = 6; });
   rejected("player number 0", [](blackboard_snapshot_t& m) { m.player_number = 0; });
+  rejected("a drop-in by team 2", [](blackboard_snapshot_t& m) { m.drop_in_team = 2; });
+  rejected("a drop-in time below -1", [](blackboard_snapshot_t& m) { m.drop_in_time = -2; });
   rejected("kick phase 4", [](blackboard_snapshot_t& m) { m.kick_phase = 4; });
   rejected("NaN odometry", [](blackboard_snapshot_t& m) { m.odometry.x_mm = std::nanf(""); });
   rejected("infinite head request", [](blackboard_snapshot_t& m) { m.request_head.yaw_rad = INFINITY; });

@@ -20,6 +20,7 @@ def test_an_empty_board_has_no_set_play_and_its_fields_are_read_only():
     gc = robot.Blackboard().gameController
     assert gc.setPlay == robot.SetPlay.NONE and gc.setPlayTeam == -1
     assert gc.firstHalf is True and gc.kickOffTeam == 0  # the C++ Blackboard's defaults, as it has them
+    assert gc.dropInTeam == -1 and gc.dropInTime == -1  # no ball put back yet
     try:
         gc.setPlayTeam = 1
     except AttributeError:

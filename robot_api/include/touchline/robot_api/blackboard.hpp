@@ -85,6 +85,11 @@ struct GameControllerBlackboard {
   int kickOffTeam = 0;      ///< team index (0 or 1) that kicks off
   SetPlay setPlay = SetPlay::NONE; ///< the set play under way
   int setPlayTeam = -1;            ///< the team index taking it (0 or 1; ours is `team`), -1: none
+  /// The last ball put back after it left the field, as the SPL 2011 GameController tells it
+  /// (rules without set plays): the team index whose touch put it out (ours is `team`; -1:
+  /// not known), and whole seconds since it was put back (-1: none yet).
+  int dropInTeam = -1;
+  int dropInTime = -1;
 };
 
 /// A teammate's last message, written by the receiver adapter.

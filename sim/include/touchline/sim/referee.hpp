@@ -258,6 +258,9 @@ class Referee {
   SetPlay set_play_ = SetPlay::kNone;
   int set_play_team_ = -1;
   int64_t set_play_until_utime_ = 0;
+  /// The last ball put back without a set play (GameInfo::drop_in_*): by whose touch, when.
+  int drop_in_team_ = -1;
+  int64_t drop_in_utime_ = -1;
   /// The stuck-game watch: when a robot last began touching the ball, and where the ball
   /// was when it last moved game_stuck_radius_mm (each restarted with PLAYING and set plays).
   int64_t last_ball_touch_utime_ = 0;

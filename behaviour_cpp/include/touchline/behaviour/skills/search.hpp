@@ -1,6 +1,7 @@
 #pragma once
 // Search: the body of a field player (not the goalie) that has not seen the ball for
-// SEARCH_TURN_FRAMES, so that a lost robot never turns on the spot for long. The port of
+// SEARCH_TURN_FRAMES, so that a lost robot never turns on the spot for long, or has not seen
+// it since the referee put it back after it left the field. The port of
 // behaviour_py/skills/search.py (which says what it does); reads the Blackboard's
 // localisation, gameController, receiver and motion (its touches, through keepClear and
 // GoToPose's Avoid), writes nothing.
@@ -27,6 +28,9 @@ inline constexpr int MIDFIELDER_FIRST_SPOT = 1;       ///< ... the midfielder it
 inline constexpr int DEFENDER_FIRST_SPOT = 2;         ///< ... and the defender the own half
 inline constexpr float BALL_AT_FEET_DIST = 250.f;     ///< mm: a lost ball last seen this near lies at the feet, so ...
 inline constexpr float SEARCH_BACK_OFF_SPEED = 150.f; ///< mm/s: ... the robot steps away from it this fast, not turning
+inline constexpr float DROP_IN_SETBACK = 1000.f;      ///< mm: SPL 2011 puts a ball that left the field back this far
+                                                      ///< towards the goal of the team that put it out
+inline constexpr int DROP_IN_FRESH_S = 8;             ///< s: a ball put back this recently is looked for where it was put
 
 /// (x, y) a role walks back to while the ball is lost; supporters: the SupporterDef played.
 FieldPoint homePosition(int role, const SupporterDef& supporters);
@@ -40,6 +44,11 @@ std::optional<FieldPoint> teamBall(int playerNumber, const std::vector<api::Team
 api::AbsCoord teamBallTarget(int role, float ballX, float ballY, float robotY, const SupporterDef& supporters);
 /// (x, y) of the role's walk-th search spot (0: its first).
 FieldPoint searchSpot(int role, int walk);
+/// (x, y) where the SPL 2011 rules put back a ball last seen at (ballX, ballY) that then left
+/// the field: on the line it left by (the one it lies farther beyond, or nearer inside),
+/// DROP_IN_SETBACK along x towards the goal of the team dropInTeam (ours, ourTeam, defends
+/// -x; -1: not moved), within the goal lines.
+FieldPoint dropInSpot(float ballX, float ballY, int dropInTeam, int ourTeam);
 
 class Search {
  public:
@@ -48,10 +57,21 @@ class Search {
   /// The body request of a field player of `role` searching, or nullopt while it has not lost
   /// the ball for long enough, or plays the role's own skill (a supporter walking home).
   std::optional<api::ActionCommand::Body> tick(const api::Blackboard& blackboard, int role);
+  /// Where the ball was put back while this robot has not seen it since (the last tick's).
+  const std::optional<FieldPoint>& dropIn() const { return dropIn_; }
 
  private:
+  /// Latches dropIn_ when the GameController's dropInTime starts again (a ball put back)
+  /// while this robot does not see the ball; clears it once the ball is seen, or the drop-in
+  /// is DROP_IN_FRESH_S old.
+  void updateDropIn(const api::Blackboard& blackboard);
+  /// The walk to where the role stands for a ball at `ball` (teamBallTarget).
+  api::ActionCommand::Body toBall(const api::Blackboard& blackboard, int role, FieldPoint ball);
+
   SupporterDef supporters_;
-  GoToPose teamBallPose_;
+  int lastDropInTime_ = -1;          ///< dropInTime at the last tick
+  std::optional<FieldPoint> dropIn_; ///< where the ball was put back, until it is seen
+  GoToPose ballPose_;
   GoToPose spotPose_;
 };
 

@@ -2,9 +2,10 @@
 // Team: the whole robot for a match. Game states, team messages, roles; the port of
 // behaviour_py/skills/team.py.
 //
-// Every tick the head runs LandmarkGlance (LookForBall with glances at landmarks) and, every
-// MESSAGE_EVERY_FRAMES frames (counted by its own ticks, never wall time), the request carries
-// this robot's team message. The body:
+// Every tick the head runs LandmarkGlance (LookForBall with glances at landmarks), or in
+// PLAYING looks where a ball lies that the referee put back and this field player has not seen
+// since (search.hpp's drop-in); every MESSAGE_EVERY_FRAMES frames (counted by its own ticks,
+// never wall time), the request carries this robot's team message. The body:
 // penalised or fallen: stand (it gets up by itself); INITIAL, SET, FINISHED: stand; READY:
 // walk to the player number's kick-off position (a fixed legal formation in the own half,
 // outside the centre circle, but for player 2 when its team kicks off: the ball is then

@@ -5,6 +5,10 @@
 
 namespace touchline::behaviour::skills {
 
+/// The head request that points the camera at `rr`, pitched so a ball there lies in the
+/// visible range.
+api::ActionCommand::Head lookAt(const api::RRCoord& rr);
+
 class TrackBall : public api::Behaviour {
  public:
   api::ActionCommand::All tick(const api::Blackboard& blackboard) override;
