@@ -9,7 +9,9 @@ from boards import board, relative, seenRobot
 from skills.ball import BALL_LOST_FRAMES, BEHIND_BALL_DIST, kickAim, pointBehindBall
 from skills.field import FIELD_EDGE_SLACK, FIELD_HALF_LENGTH, FIELD_HALF_WIDTH, clampToField
 from skills.go_to_ball import GoToBall
-from skills.line_up_and_kick import CARRY_SPEED, SIDESTEP_FRAMES, STALL_FRAMES, LineUpAndKick
+from skills.line_up_and_kick import (CARRY_CLOSING_GAIN, CARRY_SPEED, KICK_BALL_X, LINE_UP_MAX_SPEED, LINE_UP_MAX_TURN,
+                                     SIDESTEP_FRAMES, STALL_FRAMES, LineUpAndKick, carrySpeed)
+from skills.robot_limits import MAX_FORWARD
 
 ORIGIN = (0.0, 0.0, 0.0)
 KICK = robot.ActionType.KICK
@@ -46,7 +48,7 @@ def test_not_facing_the_goal_turns_instead_of_kicking():
     pos = (1500.0, 0.0, 0.3)  # ball in front of the left foot, goal 0.36 rad to the right
     command = LineUpAndKick().tick(board(pos, ball=relative(pos, 130.0, 50.0)))
     assert command.body.actionType == WALK
-    assert velocities(command) == pytest.approx((0.0, 0.0, -0.5), abs=1e-3)
+    assert velocities(command) == pytest.approx((0.0, 0.0, -0.72380), abs=1e-3)  # TURN_GAIN x the 0.36 rad to the goal
 
 
 def test_far_from_the_goal_a_kick_off_its_line_is_taken():
@@ -105,7 +107,9 @@ def test_a_stalled_contest_steps_round_the_ball_away_from_the_robot_then_kicks_a
     bodies = [skill.tick(contested).body for _ in range(1 + STALL_FRAMES + SIDESTEP_FRAMES + 1)]
     assert all(b.actionType == KICK for b in bodies[:1 + STALL_FRAMES])  # kicks, and the ball stays
     for b in bodies[1 + STALL_FRAMES:-1]:
-        assert (b.actionType, b.forward, b.left, b.turn) == (WALK, 0.0, pytest.approx(-150.0), pytest.approx(0.5))
+        # turning to the ball, TURN_GAIN x its bearing
+        assert (b.actionType, b.forward, b.left, b.turn) == (WALK, 0.0, pytest.approx(-LINE_UP_MAX_SPEED),
+                                                             pytest.approx(0.96895, abs=1e-4))
     assert bodies[-1].actionType == KICK  # then kicks again from there
 
 
@@ -140,7 +144,7 @@ def test_a_carrier_walks_a_ball_on_from_an_aim_a_kicker_would_walk_round_to():
     assert kicker.tick(board(pos, ball=ball)).body.forward < CARRY_SPEED and not kicker.liningUp
     carrier = LineUpAndKick(carry=True)
     body = carrier.tick(board(pos, ball=ball)).body
-    assert (body.actionType, body.forward, body.turn) == (WALK, CARRY_SPEED, pytest.approx(-0.5))
+    assert (body.actionType, body.forward, body.turn) == (WALK, CARRY_SPEED, pytest.approx(-LINE_UP_MAX_TURN))
     assert carrier.liningUp
 
 
@@ -164,10 +168,21 @@ def test_a_carrier_does_not_walk_the_ball_off_the_field():
     assert body.forward * math.sin(pos[2]) + body.left * math.cos(pos[2]) == pytest.approx(0.0, abs=1e-3)
 
 
-def test_ball_too_far_takes_small_steps():
+def test_ball_too_far_steps_closer():
     command = LineUpAndKick().tick(board(ORIGIN, ball=(250.0, 40.0)))
     assert command.body.actionType == WALK
-    assert velocities(command) == pytest.approx((150.0, -20.0, -0.02909), abs=1e-3)
+    # LINE_UP_GAIN x the errors (120 mm, -10 mm)
+    assert velocities(command) == pytest.approx((240.0, -20.0, -0.02909), abs=1e-3)
+
+
+def test_a_carrier_closes_on_a_ball_ahead_faster_and_meets_it_at_carry_speed():
+    assert carrySpeed(KICK_BALL_X) == CARRY_SPEED  # at the foot
+    assert carrySpeed(KICK_BALL_X - 50.0) == CARRY_SPEED
+    assert carrySpeed(KICK_BALL_X + 30.0) == CARRY_SPEED + 30.0 * CARRY_CLOSING_GAIN
+    assert carrySpeed(400.0) == MAX_FORWARD
+    # The skill: the ball 250 mm ahead, lined up with the goal, walked up to at full speed.
+    body = LineUpAndKick(carry=True).tick(board(ORIGIN, ball=(250.0, 0.0))).body
+    assert (body.actionType, body.forward) == (WALK, MAX_FORWARD)
 
 
 def test_foot_is_kept_while_lining_up():

@@ -7,7 +7,7 @@ from boards import board, message, seenRobot
 
 from skills.field import clampOutOfOwnBox
 from skills.goalie import Goalie, goalieTarget
-from skills.line_up_and_kick import CARRY_SPEED
+from skills.line_up_and_kick import CARRY_SPEED, carrySpeed
 from skills.striker import Striker
 from skills.supporter import THESIS, Defender, Midfielder, defenderTarget, midfielderTarget, supporterTarget
 from skills.search import SEARCH_CYCLE_FRAMES, SEARCH_TURN_FRAMES, SEARCH_TURN_LIMIT_FRAMES, SEARCH_TURN_SPEED
@@ -194,7 +194,7 @@ def test_the_kicker_of_a_kick_off_plays_the_ball_as_play_begins():
     # At its kick-off spot, the ball on the centre mark: it walks the ball on at once (the
     # opponents are outside the circle), where the striker of the other team walks to the ball.
     kicker = Team().tick(board((-150.0, -50.0, 0.0), ball=(0.0, 0.0), player=2, kickOffTeam=0))
-    assert (kicker.body.actionType, kicker.body.forward) == (WALK, CARRY_SPEED)
+    assert (kicker.body.actionType, kicker.body.forward) == (WALK, pytest.approx(carrySpeed(150.0)))  # the ball 150 mm ahead
     command = Team().tick(board((-150.0, -50.0, 0.0), state=GS.READY, player=2, kickOffTeam=0))
     assert command.body.actionType == STAND  # arrived: it stays there
     command = Team().tick(board((-150.0, -50.0, 0.0), state=GS.READY, player=2, kickOffTeam=1))

@@ -11,6 +11,10 @@ namespace touchline::behaviour::skills {
 
 using namespace api;
 
+float carrySpeed(float ballX) {
+  return clamp(CARRY_SPEED + CARRY_CLOSING_GAIN * (ballX - KICK_BALL_X), CARRY_SPEED, MAX_FORWARD);
+}
+
 LineUpAndKick::LineUpAndKick(float goalX, float goalY, bool dribble, std::optional<float> power,
                              const std::optional<std::string>& policy, bool carry)
     : goalX_(goalX),
@@ -69,7 +73,7 @@ ActionCommand::All LineUpAndKick::tick(const Blackboard& blackboard) {
       std::fabs(ballRR.y()) < CARRY_BALL_Y) {
     const float left = clamp(LINE_UP_GAIN * ballRR.y(), -LINE_UP_MAX_SPEED, LINE_UP_MAX_SPEED);
     const float turn = clamp(TURN_GAIN * aimError, -LINE_UP_MAX_TURN, LINE_UP_MAX_TURN);
-    const WalkVelocity v = keepClear(blackboard, CARRY_SPEED, left);
+    const WalkVelocity v = keepClear(blackboard, carrySpeed(ballRR.x()), left);
     return actioncommand::compose({}, actioncommand::walk(v.forward, v.left, turn));
   }
   ActionCommand::Body body = lineUp(ballRR, aimError);

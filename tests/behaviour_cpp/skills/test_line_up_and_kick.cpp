@@ -9,6 +9,7 @@
 #include "boards.hpp"
 #include "touchline/behaviour/skills/ball.hpp"
 #include "touchline/behaviour/skills/field.hpp"
+#include "touchline/behaviour/skills/robot_limits.hpp"
 
 using namespace touchline::api;
 using namespace touchline::behaviour::skills;
@@ -53,7 +54,7 @@ TEST(LineUpAndKickSkill, NotFacingTheGoalTurnsInsteadOfKicking) {
   const auto [x, y] = relative(pos, 130.f, 50.f);
   const auto command = LineUpAndKick().tick(board(pos, x, y));
   EXPECT_EQ(command.body.actionType, ActionType::WALK);
-  expectVelocities(command, 0.f, 0.f, -0.5f);
+  expectVelocities(command, 0.f, 0.f, -0.72380f); // TURN_GAIN x the 0.36 rad to the goal
 }
 
 TEST(LineUpAndKickSkill, LiningUpNeverStepsIntoARobotItTouches) {
@@ -143,7 +144,7 @@ TEST(LineUpAndKickSkill, AStalledContestStepsRoundTheBallAwayFromTheRobotThenKic
   for (int frame = 0; frame < SIDESTEP_FRAMES; ++frame) {
     const auto command = skill.tick(blackboard);
     EXPECT_EQ(command.body.actionType, ActionType::WALK) << frame;
-    expectVelocities(command, 0.f, -150.f, 0.5f);
+    expectVelocities(command, 0.f, -LINE_UP_MAX_SPEED, 0.96895f); // turning to the ball, TURN_GAIN x its bearing
   }
   EXPECT_EQ(skill.tick(blackboard).body.actionType, ActionType::KICK); // then kicks again from there
 }
@@ -189,7 +190,7 @@ TEST(LineUpAndKickSkill, ACarrierWalksABallOnFromAnAimAKickerWouldWalkRoundTo) {
   const auto body = carrying.tick(board(pos, x, y)).body;
   EXPECT_EQ(body.actionType, ActionType::WALK);
   EXPECT_EQ(body.forward, CARRY_SPEED);
-  EXPECT_NEAR(body.turn, -0.5f, 1e-5f);
+  EXPECT_NEAR(body.turn, -LINE_UP_MAX_TURN, 1e-5f);
   EXPECT_TRUE(carrying.liningUp());
 }
 
@@ -219,10 +220,21 @@ TEST(LineUpAndKickSkill, ACarrierDoesNotWalkTheBallOffTheField) {
   EXPECT_NEAR(body.forward * std::sin(pos.theta) + body.left * std::cos(pos.theta), 0.f, 1e-3f);
 }
 
-TEST(LineUpAndKickSkill, BallTooFarTakesSmallSteps) {
+TEST(LineUpAndKickSkill, BallTooFarStepsCloser) {
   const auto command = LineUpAndKick().tick(ballAt(250.f, 40.f));
   EXPECT_EQ(command.body.actionType, ActionType::WALK);
-  expectVelocities(command, 150.f, -20.f, -0.02909f);
+  expectVelocities(command, 240.f, -20.f, -0.02909f); // LINE_UP_GAIN x the errors (120 mm, -10 mm)
+}
+
+TEST(LineUpAndKickSkill, ACarrierClosesOnABallAheadFasterAndMeetsItAtCarrySpeed) {
+  EXPECT_EQ(carrySpeed(KICK_BALL_X), CARRY_SPEED); // at the foot
+  EXPECT_EQ(carrySpeed(KICK_BALL_X - 50.f), CARRY_SPEED);
+  EXPECT_EQ(carrySpeed(KICK_BALL_X + 30.f), CARRY_SPEED + 30.f * CARRY_CLOSING_GAIN);
+  EXPECT_EQ(carrySpeed(400.f), MAX_FORWARD);
+  // The skill: the ball 250 mm ahead, lined up with the goal, walked up to at full speed.
+  const auto body = carrier().tick(ballAt(250.f, 0.f)).body;
+  EXPECT_EQ(body.actionType, ActionType::WALK);
+  EXPECT_EQ(body.forward, MAX_FORWARD);
 }
 
 TEST(LineUpAndKickSkill, FootIsKeptWhileLiningUp) {

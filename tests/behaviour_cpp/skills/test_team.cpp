@@ -213,7 +213,7 @@ TEST(TeamBehaviour, TheKickerOfAKickOffPlaysTheBallAsPlayBegins) {
   const AbsCoord spot{-150.f, -50.f, 0.f};
   const auto kicker = Team().tick(teamBoard(spot, 0.f, 0.f)).body;
   EXPECT_EQ(kicker.actionType, AT::WALK);
-  EXPECT_EQ(kicker.forward, CARRY_SPEED);
+  EXPECT_NEAR(kicker.forward, carrySpeed(150.f), 1e-3f); // the ball 150 mm ahead
   Blackboard ready = teamBoard(spot, 1000.f, 0.f, true, 0, GameState::READY, 2);
   EXPECT_EQ(Team().tick(ready).body.actionType, AT::STAND); // arrived: it stays there
   ready.gameController.kickOffTeam = 1;                     // the other team kicks off: out of the circle
