@@ -10,7 +10,7 @@ motion (its touches, through avoid's keepClear and GoToPose's Avoid); writes not
               stands for the ball where the rules put it (dropInSpot, from the robot's last
               sighting; Team points the head there too). Without it a robot looked where the
               ball left, often facing away from where it lay: in C++ matches (cpp:Team v
-              cpp:Striker, seeds 1-6) the referee put the ball back 76 times a match, and it
+              cpp:Striker, seeds 1-4) the referee put the ball back 79 times a match, and it
               lay there 4.9 s (median) before it moved.
   team ball:  a teammate saw the ball recently (its message says so, is at most
               MESSAGE_STALE_US old, and it is not penalised): walk to where the role stands
