@@ -112,7 +112,8 @@ class Team:
         body = self.body(blackboard)
         # A ball put back unseen is looked for where it was put; else LandmarkGlance.
         dropIn = self.search.dropIn
-        if dropIn is not None and self.role != ROLE_GOALIE and blackboard.gameController.state == robot.GameState.PLAYING:
+        playing = blackboard.gameController.state == robot.GameState.PLAYING
+        if dropIn is not None and self.role != ROLE_GOALIE and playing:
             head = lookAt(robot.toRobotRelative(blackboard.localisation.robotPos, *dropIn))
         else:
             head = self.head.tick(blackboard).head

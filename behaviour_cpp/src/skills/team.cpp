@@ -46,8 +46,9 @@ ActionCommand::All Team::tick(const Blackboard& blackboard) {
   // A ball put back unseen is looked for where it was put; else LandmarkGlance.
   const auto& dropIn = search_.dropIn();
   const bool lookAtDropIn = dropIn && role_ != ROLE_GOALIE && blackboard.gameController.state == GameState::PLAYING;
-  const ActionCommand::Head head = lookAtDropIn ? lookAt(toRobotRelative(blackboard.localisation.robotPos, dropIn->x, dropIn->y))
-                                                : head_.tick(blackboard).head;
+  const ActionCommand::Head head =
+      lookAtDropIn ? lookAt(toRobotRelative(blackboard.localisation.robotPos, dropIn->x, dropIn->y))
+                   : head_.tick(blackboard).head;
   const int32_t chest = ballRecentlySeen(blackboard) ? TEAM_BALL_SEEN_CHEST : TEAM_BALL_LOST_CHEST;
   ActionCommand::All command = actioncommand::compose(head, bodyRequest, actioncommand::leds(chest));
   if (frame_ % MESSAGE_EVERY_FRAMES == 0) command.teamMessage = encodeMessage(messageInfo(blackboard, role_));
