@@ -33,10 +33,9 @@ import robot
 
 from .avoid import keepClear
 from .ball import BEHIND_BALL_DIST, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, kickAim, pointBehindBall
-from .field import FIELD_HALF_LENGTH, FIELD_HALF_WIDTH, distance
+from .field import FIELD_HALF_LENGTH, FIELD_HALF_WIDTH, clampToField, distance
 from .goalie import GOALIE_HOME_X
 from .go_to_pose import GoToPose
-from .robot_limits import clamp
 from .supporter import TUNED, defenderTarget, midfielderTarget, supporterTarget
 from .team_comm import MESSAGE_STALE_US, ROLE_DEFENDER, ROLE_MIDFIELDER, ROLE_STRIKER, decodeMessage
 
@@ -117,9 +116,8 @@ def dropInSpot(ballX, ballY, dropInTeam, ourTeam):
     sideX = -1.0 if ballX < 0.0 else 1.0
     sideY = -1.0 if ballY < 0.0 else 1.0
     if abs(ballY) - FIELD_HALF_WIDTH > abs(ballX) - FIELD_HALF_LENGTH:
-        return clamp(ballX + setback, -FIELD_HALF_LENGTH, FIELD_HALF_LENGTH), sideY * FIELD_HALF_WIDTH
-    return (clamp(sideX * FIELD_HALF_LENGTH + setback, -FIELD_HALF_LENGTH, FIELD_HALF_LENGTH),
-            clamp(ballY, -FIELD_HALF_WIDTH, FIELD_HALF_WIDTH))
+        return clampToField(ballX + setback, sideY * FIELD_HALF_WIDTH, 0.0)
+    return clampToField(sideX * FIELD_HALF_LENGTH + setback, ballY, 0.0)
 
 
 class Search:

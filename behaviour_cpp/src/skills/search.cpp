@@ -1,6 +1,5 @@
 #include "touchline/behaviour/skills/search.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <tuple>
 #include <utility>
@@ -62,9 +61,8 @@ FieldPoint dropInSpot(float ballX, float ballY, int dropInTeam, int ourTeam) {
   const float setback = dropInTeam == ourTeam ? -DROP_IN_SETBACK : dropInTeam == 1 - ourTeam ? DROP_IN_SETBACK : 0.f;
   const float sideX = ballX < 0.f ? -1.f : 1.f, sideY = ballY < 0.f ? -1.f : 1.f;
   if (std::fabs(ballY) - FIELD_HALF_WIDTH > std::fabs(ballX) - FIELD_HALF_LENGTH)
-    return {std::clamp(ballX + setback, -FIELD_HALF_LENGTH, FIELD_HALF_LENGTH), sideY * FIELD_HALF_WIDTH};
-  return {std::clamp(sideX * FIELD_HALF_LENGTH + setback, -FIELD_HALF_LENGTH, FIELD_HALF_LENGTH),
-          std::clamp(ballY, -FIELD_HALF_WIDTH, FIELD_HALF_WIDTH)};
+    return clampToField(ballX + setback, sideY * FIELD_HALF_WIDTH, 0.f);
+  return clampToField(sideX * FIELD_HALF_LENGTH + setback, ballY, 0.f);
 }
 
 void Search::updateDropIn(const Blackboard& blackboard) {
