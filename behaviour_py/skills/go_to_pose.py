@@ -1,7 +1,9 @@
 """GoToPose: walk to a field pose. Thesis Algorithm 4.3 with the forward-first fix.
 
-Far from the target the robot turns to face it and walks forward (it walks faster forward
-than sideways); within FORWARD_FIRST_DIST, or wherever that is faster (a target behind a
+Far from the target the robot faces it and walks forward (it walks faster forward than
+sideways), turning as it walks: the forward speed scales with cos^2 of the target's bearing
+(forwardFirstSpeedScale: all of it facing the target, half at 45 degrees, none beyond 90,
+where it turns on the spot); within FORWARD_FIRST_DIST, or wherever that is faster (a target behind a
 robot that must end facing the other way: a defender falling back, facing the ball), it runs
 Algorithm 4.3: turn on the spot while the heading is off by more than TURN_FIRST_ANGLE, else
 walk the forward/left decomposition of the target while turning to the target heading.
@@ -25,12 +27,19 @@ FORWARD_FIRST_DIST = 400.0             # mm: beyond this, face the target and wa
 FORWARD_FIRST_LEAVE_DIST = 500.0       # mm: back to forward-first only beyond this
 DIRECT_MARGIN_S = 0.25                 # s: Algorithm 4.3 when this much faster (a tie walks forward) ...
 DIRECT_HYSTERESIS_S = 0.5              # s: ... and kept until forward-first is this much faster
-FACE_TARGET_ANGLE = math.radians(15)   # rad: forward-first walks only when facing this well
-TURN_FIRST_ANGLE = math.radians(15)    # rad: Algorithm 4.3 turns on the spot beyond this
+TURN_FIRST_ANGLE = math.radians(45)    # rad: Algorithm 4.3 turns on the spot beyond this (at 15 the ball moved 1 % less of the play, 16 matches)
 ARRIVE_DIST = 40.0                     # mm: arrived within this ...
 ARRIVE_ANGLE = 0.1                     # rad: ... and this
 LEAVE_DIST = 150.0                     # mm: arrived until pushed beyond this ...
 LEAVE_ANGLE = 0.35                     # rad: ... or turned beyond this
+
+
+def forwardFirstSpeedScale(bearing):
+    """The share of its forward speed forward-first walks at with the target `bearing` rad off
+    its heading: cos^2, none beyond 90 degrees (turning on the spot first whenever it was off by
+    more than 15 degrees, the ball moved 0.9 % less of the play in 16 matches)."""
+    facing = math.cos(bearing)
+    return facing * facing if facing > 0.0 else 0.0
 
 
 def directTime(toTarget, turnError):
@@ -99,12 +108,10 @@ class GoToPose:
             self.near = toTarget.distance < FORWARD_FIRST_DIST or direct + DIRECT_MARGIN_S < forwardFirst
 
     def forwardFirst(self, toTarget):
-        """Face the target, then walk straight at it, steering."""
+        """Walk at the target, turning to face it, slower the further it is off the heading."""
         turn = clampTurn(TURN_GAIN * toTarget.heading)
-        if abs(toTarget.heading) > FACE_TARGET_ANGLE:
-            return actioncommand.walk(turn=turn)
         forward, left = clampWalk(WALK_GAIN * toTarget.distance, 0.0)
-        return actioncommand.walk(forward, left, turn)
+        return actioncommand.walk(forward * forwardFirstSpeedScale(toTarget.heading), left, turn)
 
     def algorithm43(self, pos, turnError):
         """Thesis Algorithm 4.3: the target in the robot frame (runswift angles), walked

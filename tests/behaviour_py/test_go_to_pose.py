@@ -7,7 +7,7 @@ import robot
 from boards import board
 
 from skills.field import FIELD_EDGE_SLACK
-from skills.go_to_pose import GoToPose
+from skills.go_to_pose import GoToPose, forwardFirstSpeedScale
 
 WALK = robot.ActionType.WALK
 STAND = robot.ActionType.STAND
@@ -27,9 +27,21 @@ def test_target_far_behind_is_walked_backwards_when_the_robot_must_end_facing_aw
 
 
 def test_far_target_ahead_walks_forward_at_full_speed_steering():
-    # Ahead, both ways take as long: forward-first (Algorithm 4.3 only when 0.25 s faster).
+    # Ahead, both ways take as long: forward-first (Algorithm 4.3 only when 0.25 s faster),
+    # 0.05 rad off: cos^2 of it, 99.75 % of full speed.
     command = GoToPose(2000.0, 100.0, 0.0).tick(board((0.0, 0.0, 0.0)))
-    assert velocities(command) == pytest.approx((300.0, 0.0, 0.09992), abs=1e-4)
+    assert velocities(command) == pytest.approx((299.2519, 0.0, 0.09992), abs=1e-4)
+
+
+def test_forward_first_walks_slower_the_further_the_target_is_off_its_heading():
+    assert forwardFirstSpeedScale(0.0) == 1.0
+    assert forwardFirstSpeedScale(math.radians(45)) == pytest.approx(0.5)
+    assert forwardFirstSpeedScale(math.radians(-60)) == pytest.approx(0.25)
+    assert forwardFirstSpeedScale(math.radians(100)) == 0.0
+    # 2 m at 45 degrees, ending facing there: walks at half speed while turning at full rate.
+    x, y = at(2000.0, math.radians(45))
+    command = GoToPose(x, y, math.radians(45)).tick(board((0.0, 0.0, 0.0)))
+    assert velocities(command) == pytest.approx((150.0, 0.0, 1.5))
 
 
 def at(distance, bearing):
@@ -38,10 +50,11 @@ def at(distance, bearing):
 
 def test_forward_first_where_it_is_faster():
     # 2 m at 80 degrees, ending facing +x: sideways 9.9 s; turn, walk forward, turn back 8.5 s.
+    # It turns at full rate, walking on at cos^2(80 degrees) = 3 % of full speed.
     x, y = at(2000.0, math.radians(80))
     skill = GoToPose(x, y, 0.0)
     command = skill.tick(board((0.0, 0.0, 0.0)))
-    assert velocities(command) == pytest.approx((0.0, 0.0, 1.5))
+    assert velocities(command) == pytest.approx((9.0459, 0.0, 1.5), abs=1e-3)
     assert not skill.near
 
 
@@ -63,7 +76,7 @@ def test_algorithm_4_3_until_forward_first_is_clearly_faster():
     assert skill.near
     command = skill.tick(board((0.0, -1600.0, 0.0)))  # 0.57 s slower: forward-first
     assert not skill.near
-    assert command.body.forward == 0.0 and command.body.turn > 0.0
+    assert command.body.forward == pytest.approx(0.0, abs=1e-6) and command.body.turn > 0.0  # at 90 degrees
     fresh = GoToPose(0.0, 0.0, 0.0)
     fresh.tick(board((0.0, -1400.0, 0.0)))
     assert not fresh.near

@@ -91,8 +91,8 @@ def contest_board(**kwargs):
 
 def test_a_contested_ball_is_kicked_at_once_wherever_it_gains_ground():
     alone = LineUpAndKick()
-    assert alone.tick(contest_board()).body.actionType == WALK
-    assert not alone.liningUp
+    body = alone.tick(contest_board()).body
+    assert body.actionType == WALK and body.turn < 0.0  # turns to the goal, on its right, before kicking
     far = contest_board(robots=[seenRobot(1200.0, 0.0)])  # over 500 mm from the ball
     assert LineUpAndKick().tick(far).body.actionType == WALK
     contested = LineUpAndKick()
@@ -138,7 +138,7 @@ def test_with_carry_a_clear_ball_is_walked_on_not_kicked():
 
 
 def test_a_carrier_walks_a_ball_on_from_an_aim_a_kicker_would_walk_round_to():
-    pos = (0.0, 0.0, 1.0)  # the goal 1.04 rad to the right of the ball ahead
+    pos = (0.0, 0.0, 1.45)  # the goal 1.5 rad to the right of the ball ahead: beyond a right angle
     ball = relative(pos, 130.0, 0.0)
     kicker = LineUpAndKick()
     assert kicker.tick(board(pos, ball=ball)).body.forward < CARRY_SPEED and not kicker.liningUp

@@ -83,11 +83,15 @@ void GoToPose::updateNear(const RRCoord& toTarget, float error) {
   }
 }
 
+float forwardFirstSpeedScale(float bearing) {
+  const float facing = std::cos(bearing);
+  return facing > 0.f ? facing * facing : 0.f;
+}
+
 ActionCommand::Body GoToPose::forwardFirst(const RRCoord& toTarget) const {
   const float turn = clampTurn(TURN_GAIN * toTarget.heading);
-  if (std::fabs(toTarget.heading) > FACE_TARGET_ANGLE) return actioncommand::walk(0.f, 0.f, turn);
   const WalkVelocity v = clampWalk(WALK_GAIN * toTarget.distance, 0.f);
-  return actioncommand::walk(v.forward, v.left, turn);
+  return actioncommand::walk(v.forward * forwardFirstSpeedScale(toTarget.heading), v.left, turn);
 }
 
 ActionCommand::Body GoToPose::algorithm43(const AbsCoord& pos, float error) const {

@@ -8,6 +8,7 @@
 
 using namespace touchline::api;
 using touchline::behaviour::skills::FIELD_EDGE_SLACK;
+using touchline::behaviour::skills::forwardFirstSpeedScale;
 using touchline::behaviour::skills::GoToPose;
 using touchline::behaviour::test::board;
 using touchline::behaviour::test::radians;
@@ -34,15 +35,27 @@ TEST(GoToPoseSkill, TargetFarBehindIsWalkedBackwardsWhenTheRobotMustEndFacingAwa
 }
 
 TEST(GoToPoseSkill, FarTargetAheadWalksForwardAtFullSpeedSteering) {
-  // Ahead, both ways take as long: forward-first (Algorithm 4.3 only when 0.25 s faster).
-  expectVelocities(GoToPose(2000.f, 100.f, 0.f).tick(board({0, 0, 0})), 300.f, 0.f, 0.09992f, 1e-4f);
+  // Ahead, both ways take as long: forward-first (Algorithm 4.3 only when 0.25 s faster),
+  // 0.05 rad off: cos^2 of it, 99.75 % of full speed.
+  expectVelocities(GoToPose(2000.f, 100.f, 0.f).tick(board({0, 0, 0})), 299.2519f, 0.f, 0.09992f, 1e-3f);
+}
+
+TEST(GoToPoseSkill, ForwardFirstWalksSlowerTheFurtherTheTargetIsOffItsHeading) {
+  EXPECT_EQ(forwardFirstSpeedScale(0.f), 1.f);
+  EXPECT_NEAR(forwardFirstSpeedScale(radians(45)), 0.5f, 1e-6f);
+  EXPECT_NEAR(forwardFirstSpeedScale(radians(-60)), 0.25f, 1e-6f);
+  EXPECT_EQ(forwardFirstSpeedScale(radians(100)), 0.f);
+  // 2 m at 45 degrees, ending facing there: walks at half speed while turning at full rate.
+  const AbsCoord target = at(2000.f, radians(45));
+  expectVelocities(GoToPose(target.x, target.y, radians(45)).tick(board({0, 0, 0})), 150.f, 0.f, 1.5f);
 }
 
 TEST(GoToPoseSkill, ForwardFirstWhereItIsFaster) {
   // 2 m at 80 degrees, ending facing +x: sideways 9.9 s; turn, walk forward, turn back 8.5 s.
+  // It turns at full rate, walking on at cos^2(80 degrees) = 3 % of full speed.
   const AbsCoord target = at(2000.f, radians(80));
   GoToPose skill(target.x, target.y, 0.f);
-  expectVelocities(skill.tick(board({0, 0, 0})), 0.f, 0.f, 1.5f);
+  expectVelocities(skill.tick(board({0, 0, 0})), 9.0459f, 0.f, 1.5f);
   EXPECT_FALSE(skill.near());
 }
 
@@ -63,7 +76,7 @@ TEST(GoToPoseSkill, Algorithm43UntilForwardFirstIsClearlyFaster) {
   EXPECT_TRUE(skill.near());
   const auto command = skill.tick(board({0.f, -1600.f, 0.f})); // 0.57 s slower: forward-first
   EXPECT_FALSE(skill.near());
-  EXPECT_EQ(command.body.forward, 0.f);
+  EXPECT_NEAR(command.body.forward, 0.f, 1e-6f); // at 90 degrees
   EXPECT_GT(command.body.turn, 0.f);
   GoToPose fresh(0.f, 0.f, 0.f);
   fresh.tick(board({0.f, -1400.f, 0.f}));

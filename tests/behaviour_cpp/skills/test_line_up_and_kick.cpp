@@ -123,8 +123,9 @@ Blackboard contestBoard() {
 TEST(LineUpAndKickSkill, AContestedBallIsKickedAtOnceWhereverItGainsGround) {
   Blackboard blackboard = contestBoard();
   LineUpAndKick alone;
-  EXPECT_EQ(alone.tick(blackboard).body.actionType, ActionType::WALK);
-  EXPECT_FALSE(alone.liningUp());
+  const auto turning = alone.tick(blackboard).body;
+  EXPECT_EQ(turning.actionType, ActionType::WALK);
+  EXPECT_LT(turning.turn, 0.f); // turns to the goal, on its right, before kicking
   blackboard.vision.robots = {seenRobot(1200.f, 0.f)}; // over 500 mm from the ball
   EXPECT_EQ(LineUpAndKick().tick(blackboard).body.actionType, ActionType::WALK);
   blackboard.vision.robots = {seenRobot(450.f, 120.f)}; // across the ball
@@ -181,7 +182,7 @@ TEST(LineUpAndKickSkill, WithCarryAClearBallIsWalkedOnNotKicked) {
 }
 
 TEST(LineUpAndKickSkill, ACarrierWalksABallOnFromAnAimAKickerWouldWalkRoundTo) {
-  const AbsCoord pos{0.f, 0.f, 1.f}; // the goal 1.04 rad to the right of the ball ahead
+  const AbsCoord pos{0.f, 0.f, 1.45f}; // the goal 1.5 rad to the right of the ball ahead: beyond a right angle
   const auto [x, y] = relative(pos, 130.f, 0.f);
   LineUpAndKick kicker;
   EXPECT_LT(kicker.tick(board(pos, x, y)).body.forward, CARRY_SPEED);
