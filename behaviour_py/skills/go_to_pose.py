@@ -3,10 +3,11 @@
 Far from the target the robot faces it and walks forward (it walks faster forward than
 sideways), turning as it walks: the forward speed scales with cos^2 of the target's bearing
 (forwardFirstSpeedScale: all of it facing the target, half at 45 degrees, none beyond 90,
-where it turns on the spot); within FORWARD_FIRST_DIST, or wherever that is faster (a target behind a
-robot that must end facing the other way: a defender falling back, facing the ball), it runs
-Algorithm 4.3: turn on the spot while the heading is off by more than TURN_FIRST_ANGLE, else
-walk the forward/left decomposition of the target while turning to the target heading.
+where it turns on the spot); within FORWARD_FIRST_DIST, or wherever that is faster (a
+target behind a robot that must end facing the other way: a defender falling back, facing
+the ball), it runs Algorithm 4.3: turn on the spot while the heading is off by more than
+TURN_FIRST_ANGLE, else walk the forward/left decomposition of the target while turning to
+the target heading.
 Which is faster is estimated from the walk's limits (directTime, forwardFirstTime).
 Arrived (with hysteresis): stand, making way for a robot ahead. A target beyond a line (behind
 a ball on it) is moved to FIELD_EDGE_SLACK beyond it. Every walk goes through Avoid (avoid.py):
