@@ -16,6 +16,10 @@ TL_TRUTH (where every robot and the ball are); writes nothing.
   contested:  a sample in PLAYING whose ball is not moving while robots of both teams (in
               play, standing) are within POSSESSION_MM of it: held between them, toe to toe;
               its share of all samples is "ball_contested_share".
+  put back:   a sample in PLAYING from the referee's BALL_OUT (TL_EVENT) until the ball is
+              first BALL_MOVING_MM from where it was put back (the first sample after the
+              event) or PLAYING ends: the time a ball that went out costs the play; its share
+              of all samples is "ball_put_back_still_share".
 """
 from __future__ import annotations
 
@@ -40,9 +44,11 @@ def analyse_log(log: Path) -> dict:
     first message of its log). Needs the generated LCM types (build/lcm_types/gen/python) on
     sys.path; a log without TL_MATCH before its first TL_TRUTH raises ValueError."""
     import lcm
-    from touchline import game_state_t, match_config_t, world_truth_t
+    from touchline import game_state_t, match_config_t, match_event_t, world_truth_t
 
     playing = False
+    put_back = None  # None; "out": a BALL_OUT seen, its spot not yet; (x, y): where the ball was put
+    put_back_samples = 0
     possession = Counter()
     history = defaultdict(list)  # (team, player) -> [(x, y, theta, counts)]
     stuck_frames = Counter()
@@ -57,6 +63,11 @@ def analyse_log(log: Path) -> dict:
             continue
         if event.channel == "TL_GAME":
             playing = game_state_t.decode(event.data).state == game_state_t.PLAYING
+            put_back = put_back if playing else None
+            continue
+        if event.channel == "TL_EVENT":
+            if match_event_t.decode(event.data).kind == match_event_t.BALL_OUT:
+                put_back = "out"
             continue
         if event.channel != "TL_TRUTH":
             continue
@@ -85,11 +96,19 @@ def analyse_log(log: Path) -> dict:
         if nearest:
             possession[nearest[1]] += 1
         contested_samples += playing and not moving and len(near_teams) == 2
+        if put_back == "out":
+            put_back = (truth.ball_x_mm, truth.ball_y_mm)
+        if put_back is not None:
+            if math.hypot(truth.ball_x_mm - put_back[0], truth.ball_y_mm - put_back[1]) >= BALL_MOVING_MM:
+                put_back = None
+            else:
+                put_back_samples += playing
     return {"possession_frames": [possession[0], possession[1]],
             "stuck_s": [stuck_frames[0] / SAMPLES_PER_S, stuck_frames[1] / SAMPLES_PER_S],
             "ball_moving_share": moving_samples / samples if samples else 0.0,
             "playing_share": playing_samples / samples if samples else 0.0,
-            "ball_contested_share": contested_samples / samples if samples else 0.0}
+            "ball_contested_share": contested_samples / samples if samples else 0.0,
+            "ball_put_back_still_share": put_back_samples / samples if samples else 0.0}
 
 
 def add_sample(h: list, r, counts: bool, edge_x: float, edge_y: float) -> str | None:

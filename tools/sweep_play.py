@@ -32,7 +32,8 @@ STOP_POLL_S = 0.2   # how often a running match checks whether the sweep is stop
 COLUMNS = ["cell", "label", "team0", "team1", "settings", "variant", "seed", "status", "exit_code", "error",
            "goals0", "goals1", "goal_difference", "penalties0", "penalties1", "falls0", "falls1",
            "possession0", "possession_frames0", "possession_frames1", "stuck_s0", "stuck_s1",
-           "ball_moving_share", "playing_share", "ball_contested_share", "localisation_worst_mm0", "localisation_worst_mm1",
+           "ball_moving_share", "playing_share", "ball_contested_share", "ball_put_back_still_share",
+           "localisation_worst_mm0", "localisation_worst_mm1",
            "sim_s", "wall_s", "rtf", "truth_hash", "penalty_kinds"]
 
 
@@ -126,10 +127,12 @@ def from_summary(summary: dict) -> dict:
 def from_log(stats: dict) -> dict:
     """The table's columns from match_stats.analyse_log(): possession share of team 0 (empty
     when no robot had the ball), stuck seconds, the share of the match the ball moved in play, the
-    share in PLAYING and the share it sat held between both teams in play."""
+    share in PLAYING, the share it sat held between both teams in play and the share it lay
+    where the referee put it back after it went out."""
     frames = stats["possession_frames"]
     share = frames[0] / sum(frames) if sum(frames) else ""
     return {"possession0": share, "possession_frames0": frames[0], "possession_frames1": frames[1],
             "stuck_s0": stats["stuck_s"][0], "stuck_s1": stats["stuck_s"][1],
             "ball_moving_share": stats["ball_moving_share"], "playing_share": stats["playing_share"],
-            "ball_contested_share": stats["ball_contested_share"]}
+            "ball_contested_share": stats["ball_contested_share"],
+            "ball_put_back_still_share": stats["ball_put_back_still_share"]}

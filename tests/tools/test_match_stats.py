@@ -1,5 +1,5 @@
 """The match statistics: the stuck detector (spinning on the spot or pressed against a wall), the
-ball moving, and the ball held between both teams."""
+ball moving, the ball held between both teams, and the ball lying where the referee put it back."""
 import math
 import sys
 from pathlib import Path
@@ -67,11 +67,13 @@ def test_a_missing_or_foreign_log_is_one_line_and_a_failure(tmp_path, capsys):
         assert err.count("\n") == 1 and err.startswith(f"match_stats: {log}: ") and reason in err, err
 
 
-def write_log(path, ball_at, robots, seconds=3.0):
+def write_log(path, ball_at, robots, seconds=3.0, ball_out_frames=()):
     """An LCM log of a match in PLAYING: TL_MATCH, TL_GAME, then `seconds` of TL_TRUTH at 30 Hz
-    with the ball still at `ball_at` and `robots` [(team, player, x, y)] standing."""
+    with the ball at `ball_at` (a point, or a function of the frame) and `robots`
+    [(team, player, x, y)] standing; the referee's BALL_OUT (TL_EVENT) before each frame of
+    `ball_out_frames`."""
     import lcm
-    from touchline import game_state_t, match_config_t, pose2d_t, robot_truth_t, world_truth_t
+    from touchline import game_state_t, match_config_t, match_event_t, pose2d_t, robot_truth_t, world_truth_t
     log = lcm.EventLog(str(path), "w", overwrite=True)
     match = match_config_t()
     match.field_length_mm, match.field_width_mm, match.border_mm = 6000, 4000, 700
@@ -80,9 +82,13 @@ def write_log(path, ball_at, robots, seconds=3.0):
     game.state = game_state_t.PLAYING
     log.write_event(0, "TL_GAME", game.encode())
     for frame in range(int(seconds * 30)):
+        if frame in ball_out_frames:
+            out = match_event_t()
+            out.utime, out.kind, out.team, out.text = frame * 33333, match_event_t.BALL_OUT, -1, "ball out, put back"
+            log.write_event(out.utime, "TL_EVENT", out.encode())
         truth = world_truth_t()
         truth.utime = frame * 33333
-        truth.ball_x_mm, truth.ball_y_mm = ball_at
+        truth.ball_x_mm, truth.ball_y_mm = ball_at(frame) if callable(ball_at) else ball_at
         for team, player, x, y in robots:
             r = robot_truth_t()
             r.team, r.player, r.active = team, player, True
@@ -103,3 +109,17 @@ def test_a_ball_held_between_both_teams_is_contested_and_one_team_alone_is_not(t
     assert held["ball_contested_share"] == 1.0
     write_log(tmp_path / "lined_up.lcmlog", (0.0, 0.0), [(0, 2, -200.0, 0.0), (1, 2, 1000.0, 0.0)])
     assert match_stats.analyse_log(tmp_path / "lined_up.lcmlog")["ball_contested_share"] == 0.0
+
+
+def test_a_ball_put_back_counts_until_it_first_moves_from_its_spot(tmp_path):
+    # Rolling out for 1 s, put back 1 m behind, lying there 2 s, then rolled on at 10 mm a
+    # frame: it leaves its spot by 100 mm 10 frames later (frame 100), of the 120.
+    def ball(frame):
+        if frame < 30:
+            return (0.0, 1800.0 + 10.0 * frame)
+        return (-1000.0 - 10.0 * max(0, frame - 90), 2000.0)
+    write_log(tmp_path / "out.lcmlog", ball, [(0, 2, -1500.0, 1500.0)], seconds=4.0, ball_out_frames=(30,))
+    stats = match_stats.analyse_log(tmp_path / "out.lcmlog")
+    assert abs(stats["ball_put_back_still_share"] - 70 / 120) <= 1 / 40  # to a sample (every 3rd frame)
+    write_log(tmp_path / "no_out.lcmlog", ball, [(0, 2, -1500.0, 1500.0)], seconds=4.0)
+    assert match_stats.analyse_log(tmp_path / "no_out.lcmlog")["ball_put_back_still_share"] == 0.0
