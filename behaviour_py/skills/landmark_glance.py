@@ -18,10 +18,10 @@ import actioncommand
 import robot
 
 from .ball import ballRecentlySeen
-from .camera import pitchToSee
 from .field import FIELD_HALF_LENGTH, FIELD_HALF_WIDTH
 from .look_for_ball import LookForBall
 from .robot_limits import MAX_HEAD_YAW
+from .track_ball import lookAt
 
 GOAL_POST_HALF_SPAN = 700.0         # mm: a goal post from the goal's centre line (SPL 2011)
 PENALTY_MARK_X = 1200.0             # mm: penalty marks 1800 mm from the goal lines
@@ -97,4 +97,4 @@ class LandmarkGlance:
     def aim(self, blackboard, target):
         if abs(blackboard.motion.headYaw - target.heading) < GLANCE_ON_TARGET_RAD:
             self.dwell += 1
-        return actioncommand.compose(head=actioncommand.head(target.heading, pitchToSee(target.distance)))
+        return actioncommand.compose(head=lookAt(target))  # glanceTarget is within the head's yaw

@@ -4,8 +4,8 @@
 
 #include "touchline/behaviour/skills/actioncommand.hpp"
 #include "touchline/behaviour/skills/ball.hpp"
-#include "touchline/behaviour/skills/camera.hpp"
 #include "touchline/behaviour/skills/robot_limits.hpp"
+#include "touchline/behaviour/skills/track_ball.hpp"
 
 namespace touchline::behaviour::skills {
 
@@ -74,7 +74,7 @@ ActionCommand::All LandmarkGlance::tick(const Blackboard& blackboard) {
 ActionCommand::All LandmarkGlance::aim(const Blackboard& blackboard, const RRCoord& target) {
   const double off = std::fabs(static_cast<double>(blackboard.motion.headYaw) - target.heading);
   if (off < static_cast<double>(GLANCE_ON_TARGET_RAD)) ++dwell_;
-  return actioncommand::compose(actioncommand::head(target.heading, pitchToSee(target.distance)));
+  return actioncommand::compose(lookAt(target)); // glanceTarget is within the head's yaw
 }
 
 } // namespace touchline::behaviour::skills
