@@ -33,8 +33,9 @@ import robot
 
 from .avoid import keepClear
 from .ball import BEHIND_BALL_DIST, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, kickAim, pointBehindBall
-from .field import FIELD_HALF_LENGTH, FIELD_HALF_WIDTH, clampToField, distance
+from .field import FIELD_HALF_LENGTH, FIELD_HALF_WIDTH, distance
 from .goalie import GOALIE_HOME_X
+from .robot_limits import clamp
 from .go_to_pose import GoToPose
 from .supporter import TUNED, defenderTarget, midfielderTarget, supporterTarget
 from .team_comm import MESSAGE_STALE_US, ROLE_DEFENDER, ROLE_MIDFIELDER, ROLE_STRIKER, decodeMessage
@@ -53,7 +54,9 @@ DEFENDER_FIRST_SPOT = 2          # ... and the defender the own half
 BALL_AT_FEET_DIST = 250.0        # mm: a lost ball last seen this near lies at the feet, so ...
 SEARCH_BACK_OFF_SPEED = 150.0    # mm/s: ... the robot steps away from it this fast, not turning
 DROP_IN_SETBACK = 1000.0         # mm: SPL 2011 puts a ball that left the field back this far towards
-                                 # the goal of the team that put it out
+                                 # the goal of the team that put it out, ...
+THROW_IN_LINE_INSET = 400.0      # mm: ... on the throw-in line, this far inside the touchline, ...
+THROW_IN_LINE_END = 1000.0       # mm: ... which ends this far short of each goal line
 DROP_IN_FRESH_S = 8              # s: a ball put back this recently is looked for where it was put
 
 
@@ -109,15 +112,20 @@ def searchSpot(role, walk):
 
 def dropInSpot(ballX, ballY, dropInTeam, ourTeam):
     """(x, y) where the SPL 2011 rules put back a ball last seen at (ballX, ballY) that then
-    left the field: on the line it left by (the one it lies farther beyond, or nearer inside),
-    DROP_IN_SETBACK along x towards the goal of the team dropInTeam (ours, ourTeam, defends
-    -x; -1: not moved), within the goal lines."""
-    setback = -DROP_IN_SETBACK if dropInTeam == ourTeam else DROP_IN_SETBACK if dropInTeam == 1 - ourTeam else 0.0
+    left the field over the line it lies farther beyond (or nearer inside), by the team
+    dropInTeam (ours, ourTeam, defends -x; -1: not known): on the throw-in line on its side.
+    Over a touchline, DROP_IN_SETBACK along x towards dropInTeam's goal (not known: not
+    moved), within the throw-in line's ends; over a goal line, at the halfway line if the
+    goal's attackers put it out, else at the throw-in line's end by that goal line."""
     sideX = -1.0 if ballX < 0.0 else 1.0
     sideY = -1.0 if ballY < 0.0 else 1.0
-    if abs(ballY) - FIELD_HALF_WIDTH > abs(ballX) - FIELD_HALF_LENGTH:
-        return clampToField(ballX + setback, sideY * FIELD_HALF_WIDTH, 0.0)
-    return clampToField(sideX * FIELD_HALF_LENGTH + setback, ballY, 0.0)
+    lineY = sideY * (FIELD_HALF_WIDTH - THROW_IN_LINE_INSET)
+    lineEndX = FIELD_HALF_LENGTH - THROW_IN_LINE_END
+    if abs(ballY) - FIELD_HALF_WIDTH > abs(ballX) - FIELD_HALF_LENGTH:  # over a touchline
+        setback = -DROP_IN_SETBACK if dropInTeam == ourTeam else DROP_IN_SETBACK if dropInTeam == 1 - ourTeam else 0.0
+        return clamp(ballX + setback, -lineEndX, lineEndX), lineY
+    attackers = 1 - ourTeam if ballX < 0.0 else ourTeam  # of the goal whose line it left
+    return (0.0 if dropInTeam == attackers else sideX * lineEndX), lineY
 
 
 class Search:

@@ -67,47 +67,43 @@ std::optional<Referee::BallCrossing> Referee::ball_crossing(const BallTruth& b) 
   return crossing;
 }
 
-// Where the ball goes back (documented simplification of SPL 2011): to the point where it
-// crossed the line, moved ball_out_setback_mm along x towards the goal of the team that
-// touched it last (it loses ground), then ball_out_inset_mm inside the line it crossed.
-// Unknown last touch: where it crossed.
+// Where the ball goes back, SPL 2011: on the throw-in line (ball_out_inset_mm inside the
+// touchline) on the side it left, which ends throw_in_line_end_mm short of each goal line.
+// Over a touchline: where it crossed, moved ball_out_setback_mm along x towards the goal of
+// the team that touched it last (it loses ground); unknown last touch: where it crossed.
+// Over a goal line: at the halfway line when an attacker touched it last (a wide shot
+// loses the attack), else at the throw-in line's end by that goal line.
 void Referee::check_ball_out(const RefereeInput& in, RefereeDecision& d) const {
   const auto crossing = ball_crossing(in.ball);
   if (!crossing) return;
-  const float hl = field_.half_length(), hw = field_.half_width(), r = ball_radius_mm_;
+  const float hl = field_.half_length(), hw = field_.half_width();
+  const float line_end_x = std::max(0.f, hl - rules_.throw_in_line_end_mm);
   const float setback = in.last_touch_team == 0   ? -rules_.ball_out_setback_mm
                         : in.last_touch_team == 1 ? rules_.ball_out_setback_mm
                                                   : 0.f;
-  const float inset = rules_.ball_out_inset_mm;
-  BallPlacement put{BallPlacement::Why::kBallOut, 0.f, 0.f};
+  BallPlacement put{BallPlacement::Why::kBallOut, 0.f, detail::sign_of(crossing->y_mm) * (hw - rules_.ball_out_inset_mm)};
   if (crossing->over_touchline) {
-    put.x_mm = std::clamp(crossing->x_mm + setback, -hl, hl);
-    put.y_mm = detail::sign_of(crossing->y_mm) * (hw - inset);
+    put.x_mm = std::clamp(crossing->x_mm + setback, -line_end_x, line_end_x);
   } else {
     const float sx = detail::sign_of(crossing->x_mm);
-    put.x_mm = std::clamp(sx * hl + setback, -(hl - inset), hl - inset);
-    put.y_mm = crossing->y_mm;
-    // Put back on the goal line by its own goal, the ball would sit among the posts;
-    // move it out along the line, clear of the post.
-    const FieldDef& f = field_.def();
-    const float clear_of_post = f.goal_width_mm / 2 + f.goal_post_diameter_mm / 2 + r;
-    if (std::fabs(put.x_mm) > hl - f.goal_post_diameter_mm / 2 - r && std::fabs(put.y_mm) < clear_of_post)
-      put.y_mm = detail::sign_of(crossing->y_mm) * clear_of_post;
+    const int defending = sx < 0 ? 0 : 1;
+    const bool by_attacker = in.last_touch_team == 1 - defending;
+    put.x_mm = by_attacker ? 0.f : sx * line_end_x;
   }
-  clear_of_robots(in, setback != 0.f ? detail::sign_of(setback) : -detail::sign_of(put.x_mm), put);
+  clear_of_robots(in, setback != 0.f ? detail::sign_of(setback) : -detail::sign_of(put.x_mm), line_end_x, put);
   d.ball = put;
 }
 
-// Candidates every kClearStepMm along x, nearest first, up to the goal lines; none clear
+// Candidates every kClearStepMm along x, nearest first, up to +-limit_x; none clear
 // within kClearSteps steps either way (2 m) leaves the spot as it is (a crowd the ball
 // cannot avoid).
-void Referee::clear_of_robots(const RefereeInput& in, float toward_x, BallPlacement& put) const {
+void Referee::clear_of_robots(const RefereeInput& in, float toward_x, float limit_x, BallPlacement& put) const {
   constexpr float kClearStepMm = 50.f;
   constexpr int kClearSteps = 40;
-  const float clearance = rules_.ball_out_clearance_mm, hl = field_.half_length();
+  const float clearance = rules_.ball_out_clearance_mm;
   if (clearance <= 0.f) return;
   const auto clear = [&](float x) {
-    if (std::fabs(x) > hl) return false;
+    if (std::fabs(x) > limit_x) return false;
     return std::none_of(in.robots.begin(), in.robots.end(), [&](const RobotOnField& r) {
       return std::hypot(r.body.x_mm - x, r.body.y_mm - put.y_mm) < clearance;
     });

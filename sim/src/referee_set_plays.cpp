@@ -35,20 +35,20 @@ void Referee::award_ball_out(const RefereeInput& in, RefereeDecision& d) {
   const auto crossing = ball_crossing(in.ball);
   if (!crossing) return;
   const FieldDef& f = field_.def();
-  const float hl = field_.half_length(), hw = field_.half_width(), inset = rules_.ball_out_inset_mm;
+  const float hl = field_.half_length(), hw = field_.half_width();
   const float sx = detail::sign_of(crossing->x_mm), sy = detail::sign_of(crossing->y_mm);
   const int half_owner = crossing->x_mm < 0 ? 0 : 1;
   BallPlacement put{BallPlacement::Why::kSetPlay, 0.f, 0.f};
   if (crossing->over_touchline) {
     const int team = in.last_touch_team >= 0 ? 1 - in.last_touch_team : half_owner;
     put.x_mm = crossing->x_mm;
-    put.y_mm = sy * (hw - inset);
+    put.y_mm = sy * hw;
     start_set_play(SetPlay::kKickIn, team, in.utime, d);
   } else {
     const int defending = sx < 0 ? 0 : 1;
     if (in.last_touch_team == defending) {
-      put.x_mm = sx * (hl - inset);
-      put.y_mm = sy * (hw - inset);
+      put.x_mm = sx * hl;
+      put.y_mm = sy * hw;
       start_set_play(SetPlay::kCornerKick, 1 - defending, in.utime, d);
     } else {
       put.x_mm = sx * (hl - f.goal_box_length_mm);
@@ -56,7 +56,7 @@ void Referee::award_ball_out(const RefereeInput& in, RefereeDecision& d) {
       start_set_play(SetPlay::kGoalKick, defending, in.utime, d);
     }
   }
-  clear_of_robots(in, -detail::sign_of(put.x_mm), put);
+  clear_of_robots(in, -detail::sign_of(put.x_mm), hl, put);
   d.ball = put;
 }
 

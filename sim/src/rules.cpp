@@ -32,7 +32,8 @@ void bind(IniSchema& s, RulesDef& d) {
       .bind("rules.manual_placement", &d.manual_placement, "place robots not in legal positions at SET")
       .bind("rules.ball_out", &d.ball_out, "put back a ball that left the field")
       .bind("rules.ball_out_setback_mm", &d.ball_out_setback_mm, "towards the last toucher's goal, mm")
-      .bind("rules.ball_out_inset_mm", &d.ball_out_inset_mm, "inside the line crossed, mm")
+      .bind("rules.ball_out_inset_mm", &d.ball_out_inset_mm, "the throw-in line: this far inside the touchline, mm")
+      .bind("rules.throw_in_line_end_mm", &d.throw_in_line_end_mm, "the throw-in lines end this far short of the goal lines, mm")
       .bind("rules.ball_out_clearance_mm", &d.ball_out_clearance_mm, "a ball put back this far from every robot, mm")
       .bind("rules.set_plays", &d.set_plays, "kick-ins, goal and corner kicks, pushing free and penalty kicks")
       .bind("rules.set_play_s", &d.set_play_s, "a set play ends when its team touches the ball or after this, s")
@@ -60,6 +61,7 @@ void validate(const RulesDef& d) {
   require_non_negative("rules.leave_field_margin_mm", d.leave_field_margin_mm);
   require_non_negative("rules.ball_out_setback_mm", d.ball_out_setback_mm);
   require_non_negative("rules.ball_out_inset_mm", d.ball_out_inset_mm);
+  require_non_negative("rules.throw_in_line_end_mm", d.throw_in_line_end_mm);
   require_non_negative("rules.ball_out_clearance_mm", d.ball_out_clearance_mm);
   require_positive("rules.set_play_s", d.set_play_s);
   require_non_negative("rules.getup_s", d.getup_s);

@@ -11,8 +11,8 @@ from boards import board, message
 from skills.ball import BEHIND_BALL_DIST, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, kickAim, pointBehindBall
 from skills.field import FIELD_EDGE_SLACK, FIELD_HALF_LENGTH, FIELD_HALF_WIDTH
 from skills.search import (BALL_AT_FEET_DIST, DROP_IN_FRESH_S, DROP_IN_SETBACK, HOME_NEAR_DIST, SEARCH_CYCLE_FRAMES,
-                           SEARCH_TURN_FRAMES, SEARCH_TURN_LIMIT_FRAMES, SEARCH_TURN_SPEED, Search, dropInSpot, searchSpot,
-                           teamBall, teamBallTarget)
+                           SEARCH_TURN_FRAMES, SEARCH_TURN_LIMIT_FRAMES, SEARCH_TURN_SPEED, THROW_IN_LINE_END,
+                           THROW_IN_LINE_INSET, Search, dropInSpot, searchSpot, teamBall, teamBallTarget)
 from skills.supporter import THESIS
 from skills.team import Team
 from skills.team_comm import (MESSAGE_STALE_US, NO_BALL_DISTANCE, ROLE_DEFENDER, ROLE_MIDFIELDER, ROLE_STRIKER,
@@ -143,19 +143,23 @@ def test_the_team_searches_but_the_goalie_keeps_its_box():
     assert command.body.actionType == STAND
 
 
-def test_a_ball_put_back_lies_on_the_line_it_left_by_set_back_towards_the_goal_of_who_put_it_out():
+def test_a_ball_put_back_lies_on_the_throw_in_line_where_the_spl_2011_rules_put_it():
+    lineY, lineEndX = FIELD_HALF_WIDTH - THROW_IN_LINE_INSET, FIELD_HALF_LENGTH - THROW_IN_LINE_END
     # Over the touchline (it lies farther beyond it than beyond the goal line), by us: towards
     # our goal (-x); by them: towards theirs; not known: where it crossed.
-    assert dropInSpot(500.0, FIELD_HALF_WIDTH + 80.0, 0, 0) == (500.0 - DROP_IN_SETBACK, FIELD_HALF_WIDTH)
-    assert dropInSpot(500.0, -FIELD_HALF_WIDTH - 80.0, 1, 0) == (500.0 + DROP_IN_SETBACK, -FIELD_HALF_WIDTH)
-    assert dropInSpot(500.0, FIELD_HALF_WIDTH - 30.0, -1, 0) == (500.0, FIELD_HALF_WIDTH)  # last seen just inside
-    assert dropInSpot(500.0, FIELD_HALF_WIDTH + 80.0, 1, 1) == (500.0 - DROP_IN_SETBACK, FIELD_HALF_WIDTH)  # team 1's "us"
-    # Over a goal line: set back from it, within the goal lines.
-    assert dropInSpot(FIELD_HALF_LENGTH + 100.0, 700.0, 1, 0) == (FIELD_HALF_LENGTH, 700.0)
-    assert dropInSpot(FIELD_HALF_LENGTH + 100.0, 700.0, 0, 0) == (FIELD_HALF_LENGTH - DROP_IN_SETBACK, 700.0)
-    assert dropInSpot(-FIELD_HALF_LENGTH - 100.0, -2100.0, 1, 0) == (-FIELD_HALF_LENGTH + DROP_IN_SETBACK, -FIELD_HALF_WIDTH)
-    # Near a corner along the touchline, still within the goal lines.
-    assert dropInSpot(FIELD_HALF_LENGTH - 200.0, FIELD_HALF_WIDTH + 300.0, 1, 0) == (FIELD_HALF_LENGTH, FIELD_HALF_WIDTH)
+    assert dropInSpot(500.0, FIELD_HALF_WIDTH + 80.0, 0, 0) == (500.0 - DROP_IN_SETBACK, lineY)
+    assert dropInSpot(500.0, -FIELD_HALF_WIDTH - 80.0, 1, 0) == (500.0 + DROP_IN_SETBACK, -lineY)
+    assert dropInSpot(500.0, FIELD_HALF_WIDTH - 30.0, -1, 0) == (500.0, lineY)  # last seen just inside
+    assert dropInSpot(500.0, FIELD_HALF_WIDTH + 80.0, 1, 1) == (500.0 - DROP_IN_SETBACK, lineY)  # team 1's "us"
+    # The setback stops at the throw-in line's end.
+    assert dropInSpot(FIELD_HALF_LENGTH - 200.0, FIELD_HALF_WIDTH + 300.0, 1, 0) == (lineEndX, lineY)
+    # Over a goal line by its attackers (we attack +x): to the halfway line, on its side's line; ...
+    assert dropInSpot(FIELD_HALF_LENGTH + 100.0, 700.0, 0, 0) == (0.0, lineY)
+    assert dropInSpot(-FIELD_HALF_LENGTH - 100.0, -2100.0, 1, 0) == (0.0, -lineY)
+    # ... by its defenders, or not known: to the line's end by that goal line.
+    assert dropInSpot(FIELD_HALF_LENGTH + 100.0, 700.0, 1, 0) == (lineEndX, lineY)
+    assert dropInSpot(-FIELD_HALF_LENGTH - 100.0, -300.0, 0, 0) == (-lineEndX, -lineY)
+    assert dropInSpot(FIELD_HALF_LENGTH + 100.0, -700.0, -1, 0) == (lineEndX, -lineY)
 
 
 def test_a_robot_that_did_not_see_the_ball_put_back_walks_and_looks_to_where_the_rules_put_it():
@@ -166,7 +170,7 @@ def test_a_robot_that_did_not_see_the_ball_put_back_walks_and_looks_to_where_the
     search = Search()
     assert search.tick(board(pos, dropIn=(-1, -1), **out), ROLE_MIDFIELDER) is None  # no drop-in yet
     body = search.tick(board(pos, dropIn=(0, 0), **out), ROLE_MIDFIELDER)
-    assert search.dropIn == (500.0 - DROP_IN_SETBACK, FIELD_HALF_WIDTH)
+    assert search.dropIn == (500.0 - DROP_IN_SETBACK, FIELD_HALF_WIDTH - THROW_IN_LINE_INSET)
     assert body.actionType == WALK and body.turn > 0.0  # turning round to it
     # It keeps the spot while the drop-in is young and the ball unseen, ...
     assert search.tick(board(pos, dropIn=(0, DROP_IN_FRESH_S - 1), **out), ROLE_MIDFIELDER) is not None
@@ -179,9 +183,9 @@ def test_a_robot_that_did_not_see_the_ball_put_back_walks_and_looks_to_where_the
     assert search.tick(board(pos, dropIn=(0, DROP_IN_FRESH_S), **out), ROLE_MIDFIELDER) is None
     assert search.dropIn is None
     # The Team looks there too: the spot is behind-left, and so is the head.
-    pos = (-200.0, 1600.0, 0.6)
+    pos = (-200.0, 1300.0, 0.6)
     head = Team(ROLE_STRIKER).tick(board(pos, dropIn=(0, 0), **out)).head
-    spot = robot.toRobotRelative(robot.AbsCoord(*pos), 500.0 - DROP_IN_SETBACK, FIELD_HALF_WIDTH)
+    spot = robot.toRobotRelative(robot.AbsCoord(*pos), 500.0 - DROP_IN_SETBACK, FIELD_HALF_WIDTH - THROW_IN_LINE_INSET)
     assert head.yaw == pytest.approx(spot.heading) and head.yaw > 1.5
 
 

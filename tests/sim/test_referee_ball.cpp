@@ -1,6 +1,7 @@
-// The ball leaving the field: put back on the line it crossed, 1 m (ball_out_setback_mm)
-// towards the own goal of the team that touched it last. SPL 2011 field: half length
-// 3000, half width 2000, goal half-width 700, posts 100 mm; ball radius 32.5 mm.
+// The ball leaving the field: put back on the throw-in line (ball_out_inset_mm, 400 mm
+// inside the touchline, ending throw_in_line_end_mm, 1000, short of the goal lines) as SPL
+// 2011 has it. SPL 2011 field: half length 3000, half width 2000, goal half-width 700, posts
+// 100 mm; ball radius 32.5 mm.
 #include <gtest/gtest.h>
 #include <functional>
 #include <optional>
@@ -32,79 +33,82 @@ void expect_ball(const BallPlacement& b, float x, float y) {
   EXPECT_NEAR(b.y_mm, y, 1e-3f);
 }
 
-TEST_F(BallOut, OverATouchlineItGoesBackTowardsTheLastTouchersGoal) {
-  expect_ball(put_back(500.f, 2040.f, 0), -500.f, 2000.f);  // team 0 defends -x
-  expect_ball(put_back(500.f, 2040.f, 1), 1500.f, 2000.f);  // team 1 defends +x
-  expect_ball(put_back(500.f, 2040.f, -1), 500.f, 2000.f);  // unknown: where it left
-  expect_ball(put_back(-700.f, -2040.f, 1), 300.f, -2000.f); // the other touchline
-  expect_ball(put_back(-700.f, -2040.f, 0), -1700.f, -2000.f);
+TEST_F(BallOut, OverATouchlineItGoesOnTheThrowInLineTowardsTheLastTouchersGoal) {
+  expect_ball(put_back(500.f, 2040.f, 0), -500.f, 1600.f);  // team 0 defends -x
+  expect_ball(put_back(500.f, 2040.f, 1), 1500.f, 1600.f);  // team 1 defends +x
+  expect_ball(put_back(500.f, 2040.f, -1), 500.f, 1600.f);  // unknown: where it left
+  expect_ball(put_back(-700.f, -2040.f, 1), 300.f, -1600.f); // the other touchline
+  expect_ball(put_back(-700.f, -2040.f, 0), -1700.f, -1600.f);
 }
 
 TEST_F(BallOut, TheCrossingPointIsTracedBackAlongTheBallsPath) {
   // 100 mm past the touchline moving (1000, 1000) mm/s: it crossed 0.1 s ago at x = 500.
-  expect_ball(put_back(600.f, 2100.f, -1, 1000.f, 1000.f), 500.f, 2000.f);
+  expect_ball(put_back(600.f, 2100.f, -1, 1000.f, 1000.f), 500.f, 1600.f);
   // Bounced back off the wall (moving into the field): no way to trace, use x as it is.
-  expect_ball(put_back(600.f, 2100.f, -1, 1000.f, -1000.f), 600.f, 2000.f);
+  expect_ball(put_back(600.f, 2100.f, -1, 1000.f, -1000.f), 600.f, 1600.f);
 }
 
-TEST_F(BallOut, SetbackStopsAtTheCorner) {
-  expect_ball(put_back(2800.f, 2040.f, 1), 3000.f, 2000.f);
-  expect_ball(put_back(-2800.f, -2040.f, 0), -3000.f, -2000.f);
+TEST_F(BallOut, TheSetbackStopsAtTheThrowInLinesEnd) {
+  expect_ball(put_back(2800.f, 2040.f, 1), 2000.f, 1600.f); // 1 m short of the goal line
+  expect_ball(put_back(-2800.f, -2040.f, 0), -2000.f, -1600.f);
+  expect_ball(put_back(1700.f, 2040.f, -1), 1700.f, 1600.f); // within it: where it crossed
 }
 
-TEST_F(BallOut, OverAGoalLineByTheAttackersItGoesBackOneMetreIntoTheField) {
-  expect_ball(put_back(3040.f, 1500.f, 0), 2000.f, 1500.f);
-  expect_ball(put_back(-3040.f, -1200.f, 1), -2000.f, -1200.f);
+TEST_F(BallOut, OverAGoalLineByTheAttackersItGoesToTheHalfwayLine) {
+  // Team 0 attacks +x: on the throw-in line of the side it left.
+  expect_ball(put_back(3040.f, 1500.f, 0), 0.f, 1600.f);
+  expect_ball(put_back(-3040.f, -1200.f, 1), 0.f, -1600.f);
 }
 
-TEST_F(BallOut, OverTheirOwnGoalLineByTheDefendersItStaysOnTheLine) {
-  expect_ball(put_back(3040.f, 1500.f, 1), 3000.f, 1500.f);
-  expect_ball(put_back(3040.f, 1500.f, -1), 3000.f, 1500.f);
-  // Beside the post, it is moved clear of it: 700 + 50 + 32.5 from the centre line.
-  expect_ball(put_back(3040.f, 760.f, -1), 3000.f, 782.5f);
-  expect_ball(put_back(-3040.f, -720.f, 0), -3000.f, -782.5f);
+TEST_F(BallOut, OverAGoalLineByTheDefendersOrUnknownItGoesToTheThrowInLinesEnd) {
+  expect_ball(put_back(3040.f, 1500.f, 1), 2000.f, 1600.f);
+  expect_ball(put_back(3040.f, -900.f, -1), 2000.f, -1600.f);
+  expect_ball(put_back(-3040.f, -720.f, 0), -2000.f, -1600.f);
 }
 
 TEST_F(BallOut, OverACornerTheLineCrossedFirstCounts) {
-  // 50 mm past the goal line and 80 mm past the touchline. Moving (1000, 2000) mm/s it
-  // crossed the goal line 0.05 s ago, the touchline 0.04 s ago: out over the goal line,
-  // at y = 2080 - 0.05 * 2000 = 1980.
-  expect_ball(put_back(3050.f, 2080.f, -1, 1000.f, 2000.f), 3000.f, 1980.f);
-  // Moving (2000, 1000) mm/s: the touchline 0.08 s ago, first; at x = 3050 - 160 = 2890.
-  expect_ball(put_back(3050.f, 2080.f, -1, 2000.f, 1000.f), 2890.f, 2000.f);
+  // Last touched by team 0, attacking +x. 50 mm past the goal line and 80 mm past the
+  // touchline. Moving (1000, 2000) mm/s it crossed the goal line 0.05 s ago, the touchline
+  // 0.04 s ago: out over the goal line by an attacker, to the halfway line.
+  expect_ball(put_back(3050.f, 2080.f, 0, 1000.f, 2000.f), 0.f, 1600.f);
+  // Moving (2000, 1000) mm/s: the touchline 0.08 s ago, first; at x = 3050 - 160 = 2890,
+  // set back 1 m.
+  expect_ball(put_back(3050.f, 2080.f, 0, 2000.f, 1000.f), 1890.f, 1600.f);
 }
 
 TEST_F(BallOut, ASpotWithARobotOnItMovesAlongTheLineTheSetbacksWayUntilClear) {
   // Put into a foot, the ball was knocked out again at once. Team 0 touched it last: the
-  // spot (-500, 2000) moves towards -x, the setback's way, until 200 mm from the robot.
+  // spot (-500, 1600) moves towards -x, the setback's way, until 200 mm from the robot.
   // Clear from x <= -673.6 (or >= -286.4): the 50 mm steps reach -700 before -300 is clear.
-  put_robot({1, 2}, -480.f, 1950.f, 0.f);
-  expect_ball(put_back(500.f, 2040.f, 0), -700.f, 2000.f);
+  put_robot({1, 2}, -480.f, 1550.f, 0.f);
+  expect_ball(put_back(500.f, 2040.f, 0), -700.f, 1600.f);
   // A second robot there: -x is clear only from -949, +x from -286.4, so +x it is (-250).
-  put_robot({0, 3}, -750.f, 1980.f, 0.f);
-  expect_ball(put_back(500.f, 2040.f, 0), -250.f, 2000.f);
+  put_robot({0, 3}, -750.f, 1580.f, 0.f);
+  expect_ball(put_back(500.f, 2040.f, 0), -250.f, 1600.f);
 }
 
 TEST_F(BallOut, AClearSpotOrAZeroClearanceLeavesTheSpot) {
-  put_robot({1, 2}, -500.f, 1750.f, 0.f); // 250 mm inside the line: clear
-  expect_ball(put_back(500.f, 2040.f, 0), -500.f, 2000.f);
+  put_robot({1, 2}, -500.f, 1350.f, 0.f); // 250 mm inside the throw-in line: clear
+  expect_ball(put_back(500.f, 2040.f, 0), -500.f, 1600.f);
   rules.ball_out_clearance_mm = 0.f;
   referee.reset();
   now_s = kKickOffS;
-  put_robot({1, 2}, -500.f, 2000.f, 0.f);
-  expect_ball(put_back(500.f, 2040.f, 0), -500.f, 2000.f);
+  put_robot({1, 2}, -500.f, 1600.f, 0.f);
+  expect_ball(put_back(500.f, 2040.f, 0), -500.f, 1600.f);
 }
 
-TEST_F(BallOut, AMovedSpotStaysWithinTheGoalLines) {
-  // On the corner spot, the setback's way (+x) is past the goal line: it goes the other way.
-  put_robot({0, 2}, 3000.f, 2000.f, 0.f);
-  expect_ball(put_back(2800.f, 2040.f, 1), 2800.f, 2000.f);
+TEST_F(BallOut, AMovedSpotStaysOnTheThrowInLine) {
+  // On the line's end, the setback's way (+x) is past it: it goes the other way.
+  put_robot({0, 2}, 2000.f, 1600.f, 0.f);
+  expect_ball(put_back(2800.f, 2040.f, 1), 1800.f, 1600.f);
 }
 
-TEST_F(BallOut, InsetPutsItInsideTheLine) {
-  rules.ball_out_inset_mm = 400;
-  expect_ball(put_back(500.f, 2040.f, -1), 500.f, 1600.f);
-  expect_ball(put_back(3040.f, 1500.f, 1), 2600.f, 1500.f);
+TEST_F(BallOut, TheThrowInLineIsConfigurable) {
+  rules.ball_out_inset_mm = 0; // on the touchline
+  rules.throw_in_line_end_mm = 0; // to the goal lines
+  expect_ball(put_back(500.f, 2040.f, -1), 500.f, 2000.f);
+  expect_ball(put_back(2800.f, 2040.f, 1), 3000.f, 2000.f);
+  expect_ball(put_back(3040.f, 1500.f, 1), 3000.f, 2000.f);
 }
 
 TEST_F(BallOut, TheGameControllerTellsWhoseBallWentOutAndHowLongAgo) {

@@ -8,6 +8,7 @@
 #include "touchline/behaviour/skills/avoid.hpp"
 #include "touchline/behaviour/skills/ball.hpp"
 #include "touchline/behaviour/skills/goalie.hpp"
+#include "touchline/behaviour/skills/robot_limits.hpp"
 #include "touchline/behaviour/skills/supporter.hpp"
 #include "touchline/behaviour/skills/team_comm.hpp"
 
@@ -58,11 +59,15 @@ FieldPoint searchSpot(int role, int walk) {
 }
 
 FieldPoint dropInSpot(float ballX, float ballY, int dropInTeam, int ourTeam) {
-  const float setback = dropInTeam == ourTeam ? -DROP_IN_SETBACK : dropInTeam == 1 - ourTeam ? DROP_IN_SETBACK : 0.f;
   const float sideX = ballX < 0.f ? -1.f : 1.f, sideY = ballY < 0.f ? -1.f : 1.f;
-  if (std::fabs(ballY) - FIELD_HALF_WIDTH > std::fabs(ballX) - FIELD_HALF_LENGTH)
-    return clampToField(ballX + setback, sideY * FIELD_HALF_WIDTH, 0.f);
-  return clampToField(sideX * FIELD_HALF_LENGTH + setback, ballY, 0.f);
+  const float lineY = sideY * (FIELD_HALF_WIDTH - THROW_IN_LINE_INSET);
+  const float lineEndX = FIELD_HALF_LENGTH - THROW_IN_LINE_END;
+  if (std::fabs(ballY) - FIELD_HALF_WIDTH > std::fabs(ballX) - FIELD_HALF_LENGTH) { // over a touchline
+    const float setback = dropInTeam == ourTeam ? -DROP_IN_SETBACK : dropInTeam == 1 - ourTeam ? DROP_IN_SETBACK : 0.f;
+    return {clamp(ballX + setback, -lineEndX, lineEndX), lineY};
+  }
+  const int attackers = ballX < 0.f ? 1 - ourTeam : ourTeam; // of the goal whose line it left
+  return {dropInTeam == attackers ? 0.f : sideX * lineEndX, lineY};
 }
 
 void Search::updateDropIn(const Blackboard& blackboard) {

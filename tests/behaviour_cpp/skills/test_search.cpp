@@ -196,20 +196,23 @@ TEST(Search, TheTeamSearchesButTheGoalieKeepsItsBox) {
   EXPECT_EQ(goalie.tick(board).body.actionType, AT::STAND);
 }
 
-TEST(Search, ABallPutBackLiesOnTheLineItLeftBySetBackTowardsTheGoalOfWhoPutItOut) {
+TEST(Search, ABallPutBackLiesOnTheThrowInLineWhereTheSpl2011RulesPutIt) {
+  const float lineY = FIELD_HALF_WIDTH - THROW_IN_LINE_INSET, lineEndX = FIELD_HALF_LENGTH - THROW_IN_LINE_END;
   // Over the touchline (it lies farther beyond it than beyond the goal line), by us: towards
   // our goal (-x); by them: towards theirs; not known: where it crossed.
-  expectSpot(dropInSpot(500.f, FIELD_HALF_WIDTH + 80.f, 0, 0), 500.f - DROP_IN_SETBACK, FIELD_HALF_WIDTH);
-  expectSpot(dropInSpot(500.f, -FIELD_HALF_WIDTH - 80.f, 1, 0), 500.f + DROP_IN_SETBACK, -FIELD_HALF_WIDTH);
-  expectSpot(dropInSpot(500.f, FIELD_HALF_WIDTH - 30.f, -1, 0), 500.f, FIELD_HALF_WIDTH); // last seen just inside
-  expectSpot(dropInSpot(500.f, FIELD_HALF_WIDTH + 80.f, 1, 1), 500.f - DROP_IN_SETBACK, FIELD_HALF_WIDTH); // team 1's "us"
-  // Over a goal line: set back from it, within the goal lines.
-  expectSpot(dropInSpot(FIELD_HALF_LENGTH + 100.f, 700.f, 1, 0), FIELD_HALF_LENGTH, 700.f);
-  expectSpot(dropInSpot(FIELD_HALF_LENGTH + 100.f, 700.f, 0, 0), FIELD_HALF_LENGTH - DROP_IN_SETBACK, 700.f);
-  expectSpot(dropInSpot(-FIELD_HALF_LENGTH - 100.f, -2100.f, 1, 0), -FIELD_HALF_LENGTH + DROP_IN_SETBACK,
-             -FIELD_HALF_WIDTH);
-  // Near a corner along the touchline, still within the goal lines.
-  expectSpot(dropInSpot(FIELD_HALF_LENGTH - 200.f, FIELD_HALF_WIDTH + 300.f, 1, 0), FIELD_HALF_LENGTH, FIELD_HALF_WIDTH);
+  expectSpot(dropInSpot(500.f, FIELD_HALF_WIDTH + 80.f, 0, 0), 500.f - DROP_IN_SETBACK, lineY);
+  expectSpot(dropInSpot(500.f, -FIELD_HALF_WIDTH - 80.f, 1, 0), 500.f + DROP_IN_SETBACK, -lineY);
+  expectSpot(dropInSpot(500.f, FIELD_HALF_WIDTH - 30.f, -1, 0), 500.f, lineY); // last seen just inside
+  expectSpot(dropInSpot(500.f, FIELD_HALF_WIDTH + 80.f, 1, 1), 500.f - DROP_IN_SETBACK, lineY); // team 1's "us"
+  // The setback stops at the throw-in line's end.
+  expectSpot(dropInSpot(FIELD_HALF_LENGTH - 200.f, FIELD_HALF_WIDTH + 300.f, 1, 0), lineEndX, lineY);
+  // Over a goal line by its attackers (we attack +x): to the halfway line, on its side's line; ...
+  expectSpot(dropInSpot(FIELD_HALF_LENGTH + 100.f, 700.f, 0, 0), 0.f, lineY);
+  expectSpot(dropInSpot(-FIELD_HALF_LENGTH - 100.f, -2100.f, 1, 0), 0.f, -lineY);
+  // ... by its defenders, or not known: to the line's end by that goal line.
+  expectSpot(dropInSpot(FIELD_HALF_LENGTH + 100.f, 700.f, 1, 0), lineEndX, lineY);
+  expectSpot(dropInSpot(-FIELD_HALF_LENGTH - 100.f, -300.f, 0, 0), -lineEndX, -lineY);
+  expectSpot(dropInSpot(FIELD_HALF_LENGTH + 100.f, -700.f, -1, 0), lineEndX, -lineY);
 }
 
 TEST(Search, ARobotThatDidNotSeeTheBallPutBackWalksAndLooksToWhereTheRulesPutIt) {
@@ -223,7 +226,7 @@ TEST(Search, ARobotThatDidNotSeeTheBallPutBackWalksAndLooksToWhereTheRulesPutIt)
   EXPECT_FALSE(search.tick(out(-1, -1, pos), ROLE_MIDFIELDER)); // no drop-in yet
   const auto body = search.tick(out(0, 0, pos), ROLE_MIDFIELDER);
   ASSERT_TRUE(search.dropIn());
-  expectSpot(*search.dropIn(), 500.f - DROP_IN_SETBACK, FIELD_HALF_WIDTH);
+  expectSpot(*search.dropIn(), 500.f - DROP_IN_SETBACK, FIELD_HALF_WIDTH - THROW_IN_LINE_INSET);
   ASSERT_TRUE(body);
   EXPECT_EQ(body->actionType, AT::WALK);
   EXPECT_GT(body->turn, 0.f); // turning round to it
@@ -238,9 +241,9 @@ TEST(Search, ARobotThatDidNotSeeTheBallPutBackWalksAndLooksToWhereTheRulesPutIt)
   EXPECT_FALSE(aged.tick(out(0, DROP_IN_FRESH_S, pos), ROLE_MIDFIELDER));
   EXPECT_FALSE(aged.dropIn());
   // The Team looks there too: the spot is behind-left, and so is the head.
-  const AbsCoord turned{-200.f, 1600.f, 0.6f};
+  const AbsCoord turned{-200.f, 1300.f, 0.6f};
   const auto head = Team(ROLE_STRIKER).tick(out(0, 0, turned)).head;
-  const RRCoord spot = toRobotRelative(turned, 500.f - DROP_IN_SETBACK, FIELD_HALF_WIDTH);
+  const RRCoord spot = toRobotRelative(turned, 500.f - DROP_IN_SETBACK, FIELD_HALF_WIDTH - THROW_IN_LINE_INSET);
   EXPECT_NEAR(head.yaw, spot.heading, 1e-5f);
   EXPECT_GT(head.yaw, 1.5f);
 }

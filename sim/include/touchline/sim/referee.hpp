@@ -22,10 +22,9 @@
 // - Pushing is judged by the thesis' heuristic (collision.hpp) between opponents only; by
 //   default (rules.pushing_model = walking_into) only a robot walking into the other, its
 //   body velocity taken from the poses the referee saw over rules.pushing_window_s.
-// - Ball out: put back on the line it crossed, ball_out_setback_mm towards the own goal
-//   of the team that touched it last (the match says which), or where it crossed if
-//   nobody knows; no throw-in or goal-kick spots. A spot with a robot on it is moved along
-//   x until it is clear (rules.ball_out_clearance_mm), set plays' spots too.
+// - Ball out: put back on the throw-in line as SPL 2011 has it (check_ball_out); the match
+//   says who touched it last. A spot with a robot on it is moved along x until it is
+//   clear (rules.ball_out_clearance_mm), set plays' spots too.
 // - No kick-off restrictions in PLAYING (the defenders may enter the circle at once).
 //
 // Set plays (rules.set_plays, SPL 2020-2022): in PLAYING, a ball out over a touchline is a
@@ -206,8 +205,9 @@ class Referee {
   bool check_goal(const RefereeInput& in, RefereeDecision& d);
   void check_ball_out(const RefereeInput& in, RefereeDecision& d) const;
   /// `put` moved along x, `toward_x` (+1 or -1) first on a tie, the shortest way that keeps
-  /// every robot's body centre rules_.ball_out_clearance_mm from it, within the goal lines.
-  void clear_of_robots(const RefereeInput& in, float toward_x, BallPlacement& put) const;
+  /// every robot's body centre rules_.ball_out_clearance_mm from it, within +-limit_x (the
+  /// throw-in line's ends, or the goal lines for a set play's spot).
+  void clear_of_robots(const RefereeInput& in, float toward_x, float limit_x, BallPlacement& put) const;
   void replace_ball_for_kickoff(const BallTruth& ball, RefereeDecision& d) const;
   /// Global Game Stuck: no touch, or no progress of the ball, for rules_.game_stuck_s.
   void check_game_stuck(const RefereeInput& in, RefereeDecision& d);

@@ -29,7 +29,9 @@ inline constexpr int DEFENDER_FIRST_SPOT = 2;         ///< ... and the defender 
 inline constexpr float BALL_AT_FEET_DIST = 250.f;     ///< mm: a lost ball last seen this near lies at the feet, so ...
 inline constexpr float SEARCH_BACK_OFF_SPEED = 150.f; ///< mm/s: ... the robot steps away from it this fast, not turning
 inline constexpr float DROP_IN_SETBACK = 1000.f;      ///< mm: SPL 2011 puts a ball that left the field back this far
-                                                      ///< towards the goal of the team that put it out
+                                                      ///< towards the goal of the team that put it out, ...
+inline constexpr float THROW_IN_LINE_INSET = 400.f;   ///< mm: ... on the throw-in line, this far inside the touchline, ...
+inline constexpr float THROW_IN_LINE_END = 1000.f;    ///< mm: ... which ends this far short of each goal line
 inline constexpr int DROP_IN_FRESH_S = 8;             ///< s: a ball put back this recently is looked for where it was put
 
 /// (x, y) a role walks back to while the ball is lost; supporters: the SupporterDef played.
@@ -45,9 +47,11 @@ api::AbsCoord teamBallTarget(int role, float ballX, float ballY, float robotY, c
 /// (x, y) of the role's walk-th search spot (0: its first).
 FieldPoint searchSpot(int role, int walk);
 /// (x, y) where the SPL 2011 rules put back a ball last seen at (ballX, ballY) that then left
-/// the field: on the line it left by (the one it lies farther beyond, or nearer inside),
-/// DROP_IN_SETBACK along x towards the goal of the team dropInTeam (ours, ourTeam, defends
-/// -x; -1: not moved), within the goal lines.
+/// the field over the line it lies farther beyond (or nearer inside), by the team dropInTeam
+/// (ours, ourTeam, defends -x; -1: not known): on the throw-in line on its side. Over a
+/// touchline, DROP_IN_SETBACK along x towards dropInTeam's goal (not known: not moved), within
+/// the throw-in line's ends; over a goal line, at the halfway line if the goal's attackers
+/// put it out, else at the throw-in line's end by that goal line.
 FieldPoint dropInSpot(float ballX, float ballY, int dropInTeam, int ourTeam);
 
 class Search {
