@@ -120,15 +120,8 @@ sense_t to_lcm(const SenseFrame& frame) {
   m.frame = frame.frame;
   m.motion_ticks = static_cast<int8_t>(frame.motion_ticks);
   m.game_state = static_cast<int8_t>(frame.game.state);
-  m.secs_remaining = frame.game.secs_remaining;
   m.first_half = frame.game.first_half;
-  m.kickoff_team = static_cast<int8_t>(frame.game.kickoff_team);
-  m.score[0] = static_cast<int8_t>(frame.game.score[0]);
-  m.score[1] = static_cast<int8_t>(frame.game.score[1]);
-  m.set_play = static_cast<int8_t>(frame.game.set_play);
-  m.set_play_team = static_cast<int8_t>(frame.game.set_play_team);
-  m.drop_in_team = static_cast<int8_t>(frame.game.drop_in_team);
-  m.drop_in_s = static_cast<int16_t>(std::min(frame.game.drop_in_s, int{INT16_MAX}));
+  write_game_fields(frame.game, m);
   m.num_robots = static_cast<int16_t>(frame.robots.size());
   for (const RobotSense& r : frame.robots) {
     robot_sense_t s;

@@ -1,6 +1,5 @@
 #include "touchline/lcm/world_messages.hpp"
 
-#include <algorithm>
 #include <cstdint>
 
 #include "touchline/lcm/codec.hpp"
@@ -38,15 +37,8 @@ game_state_t to_msg(const GameInfo& game, int64_t utime, bool finished) {
   game_state_t msg;
   msg.utime = utime;
   msg.state = static_cast<int8_t>(finished ? GameState::kFinished : game.state);
-  msg.secs_remaining = game.secs_remaining;
   msg.first_half = game.first_half ? 1 : 0;
-  msg.kickoff_team = static_cast<int8_t>(game.kickoff_team);
-  msg.score[0] = static_cast<int8_t>(game.score[0]);
-  msg.score[1] = static_cast<int8_t>(game.score[1]);
-  msg.set_play = static_cast<int8_t>(game.set_play);
-  msg.set_play_team = static_cast<int8_t>(game.set_play_team);
-  msg.drop_in_team = static_cast<int8_t>(game.drop_in_team);
-  msg.drop_in_s = static_cast<int16_t>(std::min(game.drop_in_s, int{INT16_MAX}));
+  write_game_fields(game, msg);
   return msg;
 }
 

@@ -56,6 +56,7 @@ void expect_equal(const RulesDef& a, const RulesDef& b) {
   EXPECT_EQ(a.ball_out, b.ball_out);
   EXPECT_EQ(a.ball_out_setback_mm, b.ball_out_setback_mm);
   EXPECT_EQ(a.ball_out_inset_mm, b.ball_out_inset_mm);
+  EXPECT_EQ(a.throw_in_line_end_mm, b.throw_in_line_end_mm);
   EXPECT_EQ(a.ball_out_clearance_mm, b.ball_out_clearance_mm);
 }
 
@@ -119,6 +120,9 @@ TEST(Rules, BadValuesNameTheKey) {
   r = RulesDef{};
   r.pushing_min_contact_s = NAN;
   EXPECT_EQ(validation_error(r), "rules.pushing_min_contact_s must be in [0, 1000000] (got nan)");
+  r = RulesDef{};
+  r.throw_in_line_end_mm = -1;
+  EXPECT_EQ(validation_error(r), "rules.throw_in_line_end_mm must be in [0, 1000000] (got -1)");
   EXPECT_EQ(validation_error(RulesDef{}), "");
 }
 

@@ -63,6 +63,21 @@ void decode(const void* data, int size, const std::string& channel, Msg& msg) {
                            Msg::getTypeName() + " (corrupt)");
 }
 
+/// Writes the GameController fields that sense_t and game_state_t both carry, under the same
+/// names: the clock, kick-off team, score, set play and drop-in (drop_in_s saturates at the
+/// wire's int16 after 9 hours).
+template <class Msg>
+void write_game_fields(const GameInfo& game, Msg& m) {
+  m.secs_remaining = game.secs_remaining;
+  m.kickoff_team = static_cast<int8_t>(game.kickoff_team);
+  m.score[0] = static_cast<int8_t>(game.score[0]);
+  m.score[1] = static_cast<int8_t>(game.score[1]);
+  m.set_play = static_cast<int8_t>(game.set_play);
+  m.set_play_team = static_cast<int8_t>(game.set_play_team);
+  m.drop_in_team = static_cast<int8_t>(game.drop_in_team);
+  m.drop_in_s = static_cast<int16_t>(game.drop_in_s < INT16_MAX ? game.drop_in_s : INT16_MAX);
+}
+
 pose2d_t to_lcm(const Pose2D& pose);
 sense_t to_lcm(const SenseFrame& frame);
 /// Throws MalformedMessage unless every field is in range: ids, frame 0..kMaxFrame with its
