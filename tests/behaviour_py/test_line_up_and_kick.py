@@ -7,7 +7,7 @@ import robot
 from boards import board, relative, seenRobot
 
 from skills.ball import BALL_LOST_FRAMES, BEHIND_BALL_DIST, kickAim, pointBehindBall
-from skills.field import FIELD_EDGE_SLACK, FIELD_HALF_LENGTH, FIELD_HALF_WIDTH, clampToField
+from skills.field import FIELD_EDGE_SLACK, FIELD_HALF_LENGTH, FIELD_HALF_WIDTH, OWN_BOX_FRONT_X, clampToField
 from skills.go_to_ball import GoToBall
 from skills.line_up_and_kick import (CARRY_CLOSING_GAIN, CARRY_SPEED, KICK_BALL_X, LINE_UP_MAX_SPEED, LINE_UP_MAX_TURN,
                                      SIDESTEP_FRAMES, STALL_FRAMES, LineUpAndKick, carrySpeed)
@@ -43,6 +43,19 @@ def test_lining_up_never_steps_into_a_robot_it_touches():
     assert free.actionType == WALK and free.forward > 0.0 and free.left > 0.0
     touched = LineUpAndKick().tick(board(ORIGIN, ball=(250.0, 150.0), touch=("Left",))).body
     assert touched.actionType == WALK and touched.forward > 0.0 and touched.left < 0.0
+
+def test_lining_up_never_steps_into_the_own_goal_box():
+    # Lining up with the ball short of the kicking spot and to the left: a step back and
+    # left; in front of the own goal box, where a field player is an illegal defender, the
+    # step back is dropped (avoid.py's keepOutOfOwnBox, through keepClear).
+    def step(pos):
+        return LineUpAndKick().tick(board(pos, ball=relative(pos, 60.0, 120.0))).body  # player 2
+
+    free = step((0.0, 0.0, 0.0))
+    assert free.actionType == WALK and free.forward < 0.0 and free.left > 0.0
+    byTheBox = step((OWN_BOX_FRONT_X + 150.0, 0.0, 0.0))
+    assert byTheBox.actionType == WALK and byTheBox.forward >= 0.0 and byTheBox.left > 0.0
+
 
 def test_not_facing_the_goal_turns_instead_of_kicking():
     pos = (1500.0, 0.0, 0.3)  # ball in front of the left foot, goal 0.36 rad to the right

@@ -54,7 +54,7 @@ ActionCommand::All LineUpAndKick::tick(const Blackboard& blackboard) {
   }
   if (sidestepFrames_ > 0) { // a stalled contest: step round the ball for a clear kick
     --sidestepFrames_;
-    const WalkVelocity v = keepOffTouches(blackboard.motion, 0.f, sidestepLeft_);
+    const WalkVelocity v = keepClear(blackboard, 0.f, sidestepLeft_);
     return actioncommand::compose(
         {}, actioncommand::walk(v.forward, v.left, clamp(TURN_GAIN * ballRR.heading, -LINE_UP_MAX_TURN, LINE_UP_MAX_TURN)));
   }
@@ -78,7 +78,7 @@ ActionCommand::All LineUpAndKick::tick(const Blackboard& blackboard) {
   }
   ActionCommand::Body body = lineUp(ballRR, aimError);
   if (body.actionType == ActionCommand::ActionType::WALK) {
-    const WalkVelocity v = keepOffTouches(blackboard.motion, body.forward, body.left);
+    const WalkVelocity v = keepClear(blackboard, body.forward, body.left);
     body.forward = v.forward;
     body.left = v.left;
   }

@@ -72,6 +72,26 @@ TEST(LineUpAndKickSkill, LiningUpNeverStepsIntoARobotItTouches) {
   EXPECT_LT(touched.left, 0.f);
 }
 
+TEST(LineUpAndKickSkill, LiningUpNeverStepsIntoTheOwnGoalBox) {
+  // Lining up with the ball short of the kicking spot and to the left: a step back and
+  // left; in front of the own goal box, where a field player is an illegal defender, the
+  // step back is dropped (avoid.hpp's keepOutOfOwnBox, through keepClear).
+  const auto step = [](AbsCoord pos) {
+    const auto [x, y] = relative(pos, 60.f, 120.f);
+    Blackboard blackboard = board(pos, x, y);
+    blackboard.gameController.playerNumber = 2; // a field player: the goalie may enter
+    return LineUpAndKick().tick(blackboard).body;
+  };
+  const auto open = step({0.f, 0.f, 0.f});
+  EXPECT_EQ(open.actionType, ActionType::WALK);
+  EXPECT_LT(open.forward, 0.f);
+  EXPECT_GT(open.left, 0.f);
+  const auto byTheBox = step({OWN_BOX_FRONT_X + 150.f, 0.f, 0.f});
+  EXPECT_EQ(byTheBox.actionType, ActionType::WALK);
+  EXPECT_GE(byTheBox.forward, 0.f);
+  EXPECT_GT(byTheBox.left, 0.f);
+}
+
 TEST(LineUpAndKickSkill, FarFromTheGoalAKickOffItsLineIsTaken) {
   const AbsCoord pos{0.f, 0.f, 0.3f}; // the goal 3 km away, 0.33 rad to the right
   const auto [x, y] = relative(pos, 130.f, 50.f);
