@@ -5,8 +5,11 @@ into one LCM event log, tests/data/port_corpus.lcmlog by default.
 
 Each scenario is a short match in a private network namespace: sim_world records every
 message (--log) and the robots run the Python behaviour with --snapshot-every 1; the
-snapshots of all scenarios are then gathered in scenario order. Rerun this after
-changing what the Blackboard holds or what the skills read, then rerun the tests.
+snapshots of all scenarios are then gathered in scenario order, each scenario's by simulated
+time and then robot, stamped with simulated time and without the bus's tag: the same build
+records the same bytes, so a re-recorded corpus differs only where what a behaviour saw or did
+differs. Rerun this after changing what the Blackboard holds or what the skills read, then
+rerun the tests.
 
 The learned-walker scenarios (walker=learned, LearnedGoToPose) read the go-to-pose policy
 from --data-dir (default config/, where the trained policy lives); --synthetic-policy
@@ -24,6 +27,7 @@ import sys
 import tempfile
 from pathlib import Path
 
+import touchline_paths
 from touchline_version import add_version_option
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -96,6 +100,8 @@ def main() -> int:
     if os.environ.get("TOUCHLINE_IN_NETNS") != "1":
         return subprocess.call([str(ROOT / "tools" / "netns"), sys.executable, __file__, *sys.argv[1:]])
     import lcm
+    sys.path[:0] = touchline_paths.lcm_python_dirs(args.build_dir)
+    from touchline import blackboard_snapshot_t
 
     count = 0
     with tempfile.TemporaryDirectory() as tmp:
@@ -110,10 +116,15 @@ def main() -> int:
         for index, (params, ball, seconds, robots, sets) in enumerate(SCENARIOS):
             log = Path(tmp) / f"scenario{index}.lcmlog"
             run_scenario(args.build_dir, data_dir, params, ball, seconds, robots, sets, log)
-            for event in lcm.EventLog(str(log), "r"):
-                if event.channel.startswith("TL_BLACKBOARD_"):
-                    out.write_event(event.timestamp, event.channel, event.data)
-                    count += 1
+            # Stamped with simulated time and sorted by it, then by robot, whatever order they
+            # reached the recorder, and without the bus's tag (bus.hpp: keyed by this run's
+            # secret): the same build records the same bytes.
+            snapshots = sorted((snapshot.utime, event.channel, snapshot.encode())
+                               for event in lcm.EventLog(str(log), "r") if event.channel.startswith("TL_BLACKBOARD_")
+                               for snapshot in [blackboard_snapshot_t.decode(event.data)])
+            for utime, channel, data in snapshots:
+                out.write_event(utime, channel, data)
+            count += len(snapshots)
         out.close()
     policy = "the synthetic policy" if args.synthetic_policy else data_dir / POLICY
     print(f"record_corpus: {count} snapshots from {len(SCENARIOS)} scenarios in {args.out} (learned walker: {policy})")

@@ -219,4 +219,27 @@ TEST(PortCorpus, HasThousandsOfFramesCoveringEverySkill) {
   for (const std::string& skill : every) EXPECT_TRUE(skills.count(skill)) << "no frames of " << skill;
 }
 
+TEST(PortCorpus, IsInTheFormThatARecordingReproducesByteForByte) {
+  // tools/record_corpus.py stamps each snapshot with its simulated time, orders a scenario's
+  // snapshots by (time, robot) and drops the bus's tag, so that the same build records the
+  // same file and a re-recorded corpus's diff is the behaviour's, not the recording's.
+  ::lcm::LogFile log(TOUCHLINE_CORPUS, "r");
+  ASSERT_TRUE(log.good()) << TOUCHLINE_CORPUS;
+  int64_t last_utime = -1;
+  std::string last_channel;
+  int events = 0;
+  while (const ::lcm::LogEvent* event = log.readNextEvent()) {
+    ++events;
+    blackboard_snapshot_t snapshot;
+    ASSERT_EQ(snapshot.decode(event->data, 0, event->datalen), event->datalen) << "event " << event->eventnum;
+    EXPECT_EQ(event->timestamp, snapshot.utime) << "event " << event->eventnum;
+    const bool next_scenario = snapshot.utime < last_utime;
+    EXPECT_TRUE(next_scenario || snapshot.utime > last_utime || event->channel > last_channel)
+        << "event " << event->eventnum << " (" << event->channel << " at " << snapshot.utime << ") out of order";
+    last_utime = snapshot.utime;
+    last_channel = event->channel;
+  }
+  EXPECT_GE(events, 3000);
+}
+
 } // namespace
