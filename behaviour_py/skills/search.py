@@ -35,8 +35,8 @@ from .avoid import keepClear
 from .ball import BEHIND_BALL_DIST, OPPONENT_GOAL_X, OPPONENT_GOAL_Y, kickAim, pointBehindBall
 from .field import FIELD_HALF_LENGTH, FIELD_HALF_WIDTH, distance
 from .goalie import GOALIE_HOME_X
-from .robot_limits import clamp
 from .go_to_pose import GoToPose
+from .robot_limits import clamp
 from .supporter import TUNED, defenderTarget, midfielderTarget, supporterTarget
 from .team_comm import MESSAGE_STALE_US, ROLE_DEFENDER, ROLE_MIDFIELDER, ROLE_STRIKER, decodeMessage
 
