@@ -27,7 +27,10 @@ void Localiser::frame(int64_t utime_us, const Pose2D& odometry, const std::vecto
                       std::optional<float> gyro_turn_rad) {
   if (last_odometry_) {
     OdometryDelta moved = odometry_delta(*last_odometry_, odometry);
-    if (gyro_turn_rad) moved.dtheta_rad = *gyro_turn_rad;
+    if (gyro_turn_rad) {
+      moved.dtheta_rad = *gyro_turn_rad;
+      moved.turn_from_gyro = true;
+    }
     pose_.predict(moved);
   }
   last_odometry_ = odometry;

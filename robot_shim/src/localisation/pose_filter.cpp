@@ -97,7 +97,9 @@ void PoseFilter::predict(const OdometryDelta& delta) {
   const double turned = std::fabs(delta.dtheta_rad);
   const double var_xy = def_.odo_xy_var_per_mm * walked + def_.odo_xy_var_per_call;
   const double var_theta =
-      def_.odo_theta_var_per_rad * turned + def_.odo_theta_var_per_mm * walked + def_.odo_theta_var_per_call;
+      delta.turn_from_gyro
+          ? def_.gyro_theta_var_per_rad * turned + def_.gyro_theta_var_per_mm * walked + def_.gyro_theta_var_per_call
+          : def_.odo_theta_var_per_rad * turned + def_.odo_theta_var_per_mm * walked + def_.odo_theta_var_per_call;
   const Eigen::Vector3d q_robot(var_xy, var_xy, var_theta);
 
   auto p = as_matrix(covariance_);

@@ -50,6 +50,23 @@ TEST(Localiser, TurnsByTheGyroNotByTheOdometry) {
   EXPECT_NEAR(out.robotPos.theta, 0.4f, 1e-5f);
 }
 
+TEST(Localiser, AHeadingFromTheGyroIsAsSureAsTheGyro) {
+  // 3 s of walking: with the gyro's turn the heading is unsure only as the gyro makes it.
+  Localiser with_gyro(LocalisationDef{}, Pose2D{}), walk_only(LocalisationDef{}, Pose2D{});
+  Pose2D odometry{};
+  for (int frame = 0; frame <= 90; ++frame) {
+    with_gyro.frame(frame * 33333, odometry, {}, 0.f);
+    walk_only.frame(frame * 33333, odometry, {});
+    odometry = synthetic::compose(odometry, {7.0, 0.0, 0.0});
+  }
+  const double initial_var = std::pow(PoseFilterDef{}.initial_sigma_theta_rad, 2);
+  const double gyro_growth = std::pow(with_gyro.pose_filter().sigma_theta_rad(), 2) - initial_var;
+  const double walk_growth = std::pow(walk_only.pose_filter().sigma_theta_rad(), 2) - initial_var;
+  const PoseFilterDef def;
+  EXPECT_NEAR(gyro_growth, 90 * (def.gyro_theta_var_per_call + 7.0 * def.gyro_theta_var_per_mm), 1e-9);
+  EXPECT_GT(walk_growth, 2 * gyro_growth);
+}
+
 TEST(Localiser, ARobotPutDownIsWhereItWasPutInThatFrame) {
   // The frame it was put down in moved it by nothing: its walk's steps and the referee's
   // turning it are in the pose it was put down at already.
