@@ -10,7 +10,9 @@ TL_TRUTH (where every robot and the ball are); writes nothing.
               that sample. A robot that walked away and back is not: it was not on the spot.
   ball moving: a sample in PLAYING whose ball is at least BALL_MOVING_MM from where it was
               a second before; its share of all samples of the match (set-up states, half
-              time and stoppages count as not moving) is "ball_moving_share".
+              time and stoppages count as not moving) is "ball_moving_share". A ball the
+              referee put down (BALL_OUT, SET_PLAY) starts a new path there: the jump from
+              where it went out is not a second of moving.
   playing:    the share of all samples in PLAYING, "playing_share": the most ball_moving_share
               can be, and its divisor for the share of play time the ball moved.
   contested:  a sample in PLAYING whose ball is not moving while robots of both teams (in
@@ -55,6 +57,7 @@ def analyse_log(log: Path) -> dict:
     edge_x = edge_y = None  # the carpet's edges, from TL_MATCH
     truth_frames = 0
     ball_path = []  # the ball's last SAMPLES_PER_S + 1 samples
+    placed = False  # the referee put the ball down since the last sample: its path starts again
     samples = moving_samples = playing_samples = contested_samples = 0
     for event in lcm.EventLog(str(log), "r"):
         if event.channel == "TL_MATCH" and edge_x is None:
@@ -66,8 +69,10 @@ def analyse_log(log: Path) -> dict:
             put_back = put_back if playing else None
             continue
         if event.channel == "TL_EVENT":
-            if match_event_t.decode(event.data).kind == match_event_t.BALL_OUT:
+            kind = match_event_t.decode(event.data).kind
+            if kind == match_event_t.BALL_OUT:
                 put_back = "out"
+            placed = placed or kind in (match_event_t.BALL_OUT, match_event_t.SET_PLAY)
             continue
         if event.channel != "TL_TRUTH":
             continue
@@ -78,7 +83,8 @@ def analyse_log(log: Path) -> dict:
             continue
         truth = world_truth_t.decode(event.data)
         samples += 1
-        ball_path = [*ball_path[-SAMPLES_PER_S:], (truth.ball_x_mm, truth.ball_y_mm)]
+        ball_path = [*([] if placed else ball_path[-SAMPLES_PER_S:]), (truth.ball_x_mm, truth.ball_y_mm)]
+        placed = False
         moving = playing and ball_moving(ball_path)
         moving_samples += moving
         playing_samples += playing

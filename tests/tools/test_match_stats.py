@@ -123,3 +123,13 @@ def test_a_ball_put_back_counts_until_it_first_moves_from_its_spot(tmp_path):
     assert abs(stats["ball_put_back_still_share"] - 70 / 120) <= 1 / 40  # to a sample (every 3rd frame)
     write_log(tmp_path / "no_out.lcmlog", ball, [(0, 2, -1500.0, 1500.0)], seconds=4.0)
     assert match_stats.analyse_log(tmp_path / "no_out.lcmlog")["ball_put_back_still_share"] == 0.0
+
+
+def test_a_ball_put_back_is_not_moving_in_the_second_after_the_jump(tmp_path):
+    # Rolling out for 1 s at 300 mm/s (moving), then put back 1 m away and lying still for 2 s:
+    # the jump is the referee's, not a second of play with the ball moving.
+    def ball(frame):
+        return (0.0, 1700.0 + 10.0 * frame) if frame < 30 else (-1000.0, 1600.0)
+    write_log(tmp_path / "out.lcmlog", ball, [(0, 2, -1500.0, 1500.0)], seconds=3.0, ball_out_frames=(30,))
+    stats = match_stats.analyse_log(tmp_path / "out.lcmlog")
+    assert stats["ball_moving_share"] == 0.0 and stats["ball_put_back_still_share"] > 0.6
