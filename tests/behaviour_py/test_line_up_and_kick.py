@@ -9,7 +9,7 @@ from boards import board, relative, seenRobot
 from skills.ball import BALL_LOST_FRAMES, BEHIND_BALL_DIST, kickAim, pointBehindBall
 from skills.field import FIELD_EDGE_SLACK, FIELD_HALF_LENGTH, FIELD_HALF_WIDTH, OWN_BOX_FRONT_X, clampToField
 from skills.go_to_ball import GoToBall
-from skills.line_up_and_kick import (CARRY_CLOSING_GAIN, CARRY_SPEED, KICK_BALL_X, LINE_UP_MAX_SPEED, LINE_UP_MAX_TURN,
+from skills.line_up_and_kick import (CARRY_CLOSING_GAIN, CARRY_SPEED, CONTEST_DODGE_SPEED, KICK_BALL_X, LINE_UP_MAX_SPEED, LINE_UP_MAX_TURN,
                                      SIDESTEP_FRAMES, STALL_FRAMES, LineUpAndKick, carrySpeed)
 from skills.robot_limits import MAX_FORWARD
 
@@ -170,6 +170,18 @@ def test_a_carrier_walks_on_past_a_robot_ahead_but_not_into_one_it_touches():
     touching = board(ORIGIN, ball=(130.0, 50.0), touch=("FrontLeft", "FrontRight"))
     body = LineUpAndKick(carry=True).tick(touching).body
     assert body.actionType == WALK and body.forward <= 0.0
+
+
+def test_a_contested_carrier_steps_sideways_away_from_the_robot_at_the_ball():
+    # The ball ahead on the centre line, a robot 280 mm beyond it: two carriers walking into one
+    # ball wedge it between their feet; the sideways step rolls it off the pair.
+    clear = LineUpAndKick(carry=True).tick(board(ORIGIN, ball=(130.0, 0.0))).body
+    assert (clear.actionType, clear.forward, clear.left) == (WALK, CARRY_SPEED, pytest.approx(0.0))
+    for robotY, left in ((100.0, -CONTEST_DODGE_SPEED), (-100.0, CONTEST_DODGE_SPEED)):
+        skill = LineUpAndKick(carry=True)
+        body = skill.tick(board(ORIGIN, ball=(130.0, 0.0), robots=[seenRobot(400.0, robotY)])).body
+        assert skill.contested
+        assert (body.actionType, body.forward, body.left) == (WALK, CARRY_SPEED, pytest.approx(left))
 
 
 def test_a_carrier_does_not_walk_the_ball_off_the_field():

@@ -45,6 +45,7 @@ ActionCommand::All LineUpAndKick::tick(const Blackboard& blackboard) {
     }
   }
   contested_ = nearest < CONTEST_DIST;
+  const float awaySide = nearestY > ballRR.y() ? -1.f : 1.f; // sideways away from that obstacle: + left
   const bool far = std::hypot(goalX_ - ball.x, goalY_ - ball.y) > KICK_FAR_DIST;
   aimTolerance_ = contested_ ? CONTEST_ANGLE_TOLERANCE : far ? KICK_FAR_ANGLE_TOLERANCE : KICK_ANGLE_TOLERANCE;
   updateLiningUp(ballRR, aimError);
@@ -62,7 +63,7 @@ ActionCommand::All LineUpAndKick::tick(const Blackboard& blackboard) {
     if (++stalledFrames_ >= STALL_FRAMES) {
       stalledFrames_ = 0;
       sidestepFrames_ = SIDESTEP_FRAMES;
-      sidestepLeft_ = nearestY > ballRR.y() ? -LINE_UP_MAX_SPEED : LINE_UP_MAX_SPEED;
+      sidestepLeft_ = awaySide * LINE_UP_MAX_SPEED;
     }
   } else {
     stalledFrames_ = 0;
@@ -71,7 +72,8 @@ ActionCommand::All LineUpAndKick::tick(const Blackboard& blackboard) {
   }
   if (carry_ && std::fabs(aimError) < CARRY_ANGLE && 0.f < ballRR.x() && ballRR.x() < CARRY_BALL_X &&
       std::fabs(ballRR.y()) < CARRY_BALL_Y) {
-    const float left = clamp(LINE_UP_GAIN * ballRR.y(), -LINE_UP_MAX_SPEED, LINE_UP_MAX_SPEED);
+    const float dodge = contested_ ? awaySide * CONTEST_DODGE_SPEED : 0.f;
+    const float left = clamp(LINE_UP_GAIN * ballRR.y() + dodge, -LINE_UP_MAX_SPEED, LINE_UP_MAX_SPEED);
     const float turn = clamp(TURN_GAIN * aimError, -LINE_UP_MAX_TURN, LINE_UP_MAX_TURN);
     const WalkVelocity v = keepClear(blackboard, carrySpeed(ballRR.x()), left);
     return actioncommand::compose({}, actioncommand::walk(v.forward, v.left, turn));

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "boards.hpp"
 #include "touchline/behaviour/skills/ball.hpp"
@@ -228,6 +229,24 @@ TEST(LineUpAndKickSkill, ACarrierWalksOnPastARobotAheadButNotIntoOneItTouches) {
   body = carrier().tick(touching).body;
   EXPECT_EQ(body.actionType, ActionType::WALK);
   EXPECT_LE(body.forward, 0.f);
+}
+
+TEST(LineUpAndKickSkill, AContestedCarrierStepsSidewaysAwayFromTheRobotAtTheBall) {
+  // The ball ahead on the centre line, a robot 280 mm beyond it: two carriers walking into one
+  // ball wedge it between their feet; the sideways step rolls it off the pair.
+  const auto clear = carrier().tick(ballAt(130.f, 0.f));
+  EXPECT_EQ(clear.body.actionType, ActionType::WALK);
+  expectVelocities(clear, CARRY_SPEED, 0.f, 0.f);
+  for (const auto& [robotY, left] : {std::pair{100.f, -CONTEST_DODGE_SPEED}, std::pair{-100.f, CONTEST_DODGE_SPEED}}) {
+    Blackboard blackboard = ballAt(130.f, 0.f);
+    blackboard.vision.robots = {seenRobot(400.f, robotY)};
+    LineUpAndKick skill = carrier();
+    const auto body = skill.tick(blackboard).body;
+    EXPECT_TRUE(skill.contested());
+    EXPECT_EQ(body.actionType, ActionType::WALK);
+    EXPECT_EQ(body.forward, CARRY_SPEED);
+    EXPECT_NEAR(body.left, left, 1e-3f) << robotY;
+  }
 }
 
 TEST(LineUpAndKickSkill, ACarrierDoesNotWalkTheBallOffTheField) {
