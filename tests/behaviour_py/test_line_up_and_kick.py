@@ -9,8 +9,9 @@ from boards import board, relative, seenRobot
 from skills.ball import BALL_LOST_FRAMES, BEHIND_BALL_DIST, kickAim, pointBehindBall
 from skills.field import FIELD_EDGE_SLACK, FIELD_HALF_LENGTH, FIELD_HALF_WIDTH, OWN_BOX_FRONT_X, clampToField
 from skills.go_to_ball import GoToBall
-from skills.line_up_and_kick import (CARRY_CLOSING_GAIN, CARRY_SPEED, CONTEST_DODGE_SPEED, KICK_BALL_X, LINE_UP_MAX_SPEED, LINE_UP_MAX_TURN,
-                                     SIDESTEP_FRAMES, STALL_FRAMES, LineUpAndKick, carrySpeed)
+from skills.line_up_and_kick import (CARRY_CLOSING_GAIN, CARRY_SPEED, CONTEST_DODGE_SPEED, KICK_BALL_X,
+                                     LINE_UP_MAX_SPEED, LINE_UP_MAX_TURN, SIDESTEP_FRAMES, STALL_FRAMES, LineUpAndKick,
+                                     carrySpeed)
 from skills.robot_limits import MAX_FORWARD
 
 ORIGIN = (0.0, 0.0, 0.0)
