@@ -79,8 +79,8 @@ CONTEST_DODGE_SPEED = 150.0                # mm/s: a carrier in a contest steps 
 def carrySpeed(ballX):
     """The forward speed of a carry with the ball `ballX` mm ahead of the body centre:
     CARRY_SPEED at the foot (KICK_BALL_X), faster further out (CARRY_CLOSING_GAIN), up to
-    MAX_FORWARD; at CARRY_SPEED all the way (1.5 s to a ball 400 mm ahead) the ball moved
-    1.6 % less of the play."""
+    MAX_FORWARD; at a constant 180 mm/s (CARRY_SPEED then: 1.5 s to a ball 400 mm ahead) the
+    ball moved 1.6 % less of the play."""
     return clamp(CARRY_SPEED + CARRY_CLOSING_GAIN * (ballX - KICK_BALL_X), CARRY_SPEED, MAX_FORWARD)
 
 

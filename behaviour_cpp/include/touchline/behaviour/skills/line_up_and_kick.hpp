@@ -75,7 +75,8 @@ inline constexpr float CONTEST_DODGE_SPEED = 150.f;
 
 /// The forward speed of a carry with the ball `ballX` mm ahead of the body centre: CARRY_SPEED
 /// at the foot (KICK_BALL_X), faster further out (CARRY_CLOSING_GAIN), up to MAX_FORWARD; at
-/// CARRY_SPEED all the way (1.5 s to a ball 400 mm ahead) the ball moved 1.6 % less of the play.
+/// a constant 180 mm/s (CARRY_SPEED then: 1.5 s to a ball 400 mm ahead) the ball moved 1.6 %
+/// less of the play.
 float carrySpeed(float ballX);
 
 class LineUpAndKick : public api::Behaviour {
