@@ -60,7 +60,7 @@ void BallFilter::predict(double dt_s) {
   p = 0.5 * (predicted + predicted.transpose());
 }
 
-bool BallFilter::update(const Observation& ball, const Pose2D& robot, const PoseCovariance& robot_covariance) {
+bool BallFilter::update(const Observation& ball, const Pose2D& robot) {
   if (ball.kind != ObjectKind::kBall) return false;
   Eigen::Map<Eigen::Vector4d> x(state_.data());
   Eigen::Map<Matrix4> p(covariance_.data());
@@ -71,17 +71,13 @@ bool BallFilter::update(const Observation& ball, const Pose2D& robot, const Pose
   const double c = std::cos(direction), s = std::sin(direction);
   const Eigen::Vector2d z(robot.x_mm + range * c, robot.y_mm + range * s);
 
-  // Its covariance: the camera's polar noise, plus the robot pose's own uncertainty.
+  // Its covariance: the camera's polar noise alone (the pose's error is the track's too).
   Eigen::Matrix2d j_polar;
   j_polar << c, -range * s,
              s, range * c;
   const double range_sigma = def_.range_sigma_mm + def_.range_sigma_per_mm * range;
   const Eigen::Matrix2d r_polar = Eigen::Vector2d(sq(range_sigma), sq(def_.bearing_sigma_rad)).asDiagonal();
-  Eigen::Matrix<double, 2, 3> j_pose;
-  j_pose << 1, 0, -range * s,
-            0, 1, range * c;
-  const Eigen::Map<const Matrix3> robot_p(robot_covariance.data());
-  const Eigen::Matrix2d r = j_polar * r_polar * j_polar.transpose() + j_pose * robot_p * j_pose.transpose();
+  const Eigen::Matrix2d r = j_polar * r_polar * j_polar.transpose();
 
   const Eigen::Vector2d innovation = z - x.head<2>();
   const Eigen::Matrix2d s_mat = p.topLeftCorner<2, 2>() + r;
@@ -113,6 +109,24 @@ bool BallFilter::update(const Observation& ball, const Pose2D& robot, const Pose
   return true;
 }
 
+void BallFilter::move_with(const Pose2D& from, const Pose2D& to) {
+  if (!seen_) return;
+  // The rigid motion taking `from` to `to`: rotate by the heading change about `from`,
+  // then shift by the position change.
+  const double turn = api::wrapAngle<double>(static_cast<double>(to.theta_rad) - from.theta_rad);
+  const Eigen::Rotation2Dd rotation(turn);
+  const Eigen::Vector2d from_xy(from.x_mm, from.y_mm), to_xy(to.x_mm, to.y_mm);
+  Eigen::Map<Eigen::Vector4d> x(state_.data());
+  Eigen::Map<Matrix4> p(covariance_.data());
+  x.head<2>() = to_xy + rotation * (Eigen::Vector2d(x.head<2>()) - from_xy);
+  x.tail<2>() = rotation * Eigen::Vector2d(x.tail<2>());
+  Matrix4 rotate = Matrix4::Zero();
+  rotate.topLeftCorner<2, 2>() = rotation.toRotationMatrix();
+  rotate.bottomRightCorner<2, 2>() = rotation.toRotationMatrix();
+  const Matrix4 moved = rotate * p * rotate.transpose();
+  p = 0.5 * (moved + moved.transpose());
+}
+
 api::RRCoord BallFilter::relative_to(const Pose2D& robot) const {
   return api::toRobotRelative({robot.x_mm, robot.y_mm, robot.theta_rad}, static_cast<float>(state_[0]),
                               static_cast<float>(state_[1]));
@@ -121,6 +135,21 @@ api::RRCoord BallFilter::relative_to(const Pose2D& robot) const {
 double BallFilter::position_sigma_mm() const {
   const Eigen::Map<const Matrix4> p(covariance_.data());
   return std::sqrt(Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(p.topLeftCorner<2, 2>()).eigenvalues().maxCoeff());
+}
+
+std::array<double, 4> BallFilter::field_position_covariance(const Pose2D& robot,
+                                                             const PoseCovariance& robot_covariance) const {
+  // The ball at (robot + offset) moves with the robot's position, and with its heading by
+  // the offset turned a right angle: J = [1 0 -dy; 0 1 dx].
+  const double dx = state_[0] - robot.x_mm, dy = state_[1] - robot.y_mm;
+  Eigen::Matrix<double, 2, 3> j_pose;
+  j_pose << 1, 0, -dy,
+            0, 1, dx;
+  const Eigen::Map<const Matrix3> robot_p(robot_covariance.data());
+  const Eigen::Map<const Matrix4> p(covariance_.data());
+  Eigen::Matrix2d field = p.topLeftCorner<2, 2>() + j_pose * robot_p * j_pose.transpose();
+  field = 0.5 * (field + field.transpose());
+  return {field(0, 0), field(0, 1), field(1, 0), field(1, 1)};
 }
 
 } // namespace touchline::robot::localisation

@@ -14,10 +14,10 @@ void write_localisation(const PoseFilter& pose, const BallFilter& ball, api::Loc
   out.ballVel = {static_cast<float>(v.x_mm), static_cast<float>(v.y_mm), 0.f};
   for (size_t i = 0; i < out.robotPosCovariance.size(); ++i)
     out.robotPosCovariance[i] = static_cast<float>(pose.covariance()[i]);
-  // The position block of the ball's (x, y, vx, vy) covariance.
-  const auto& bc = ball.covariance();
-  out.ballPosCovariance = {static_cast<float>(bc[0]), static_cast<float>(bc[1]), static_cast<float>(bc[4]),
-                           static_cast<float>(bc[5])};
+  // The ball on the field is as uncertain as the track and the pose it is seen from.
+  const std::array<double, 4> bc = ball.field_position_covariance(robot, pose.covariance());
+  out.ballPosCovariance = {static_cast<float>(bc[0]), static_cast<float>(bc[1]), static_cast<float>(bc[2]),
+                           static_cast<float>(bc[3])};
 }
 
 Localiser::Localiser(const LocalisationDef& def, const Pose2D& initial)
@@ -37,12 +37,15 @@ void Localiser::frame(int64_t utime_us, const Pose2D& odometry, const std::vecto
   const double dt_s = last_utime_us_ ? static_cast<double>(utime_us - *last_utime_us_) * 1e-6 : 0.0;
   last_utime_us_ = utime_us;
 
-  // Landmarks first, so the ball is placed from this frame's corrected pose.
+  // Landmarks first, so the ball is placed from this frame's corrected pose; the ball, seen
+  // from the pose, moves with a correction (BallFilter::move_with), not with odometry.
+  const Pose2D before_landmarks = pose_.pose();
   for (const Observation& o : seen)
     if (is_landmark(o.kind)) pose_.update(o);
+  ball_.move_with(before_landmarks, pose_.pose());
   ball_.predict(dt_s);
   for (const Observation& o : seen)
-    if (o.kind == ObjectKind::kBall) ball_.update(o, pose_.pose(), pose_.covariance());
+    if (o.kind == ObjectKind::kBall) ball_.update(o, pose_.pose());
 }
 
 } // namespace touchline::robot::localisation

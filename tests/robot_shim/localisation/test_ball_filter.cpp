@@ -1,5 +1,5 @@
 // The ball's Kalman filter on synthetic sightings: a ball at rest, a rolling ball, a
-// kicked ball, and a ball lost from view.
+// kicked ball, a ball lost from view, and a pose estimate that a landmark corrects.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -188,15 +188,56 @@ TEST(BallFilter, SightingUsesTheRobotPoseAndReportsRobotRelative) {
   EXPECT_FALSE(filter.update(o, robot));
 }
 
-TEST(BallFilter, UncertainRobotPoseWidensTheSighting) {
-  BallFilter certain, uncertain;
+TEST(BallFilter, ACorrectedPoseTakesTheBallAlong) {
+  // The ball was seen from the pose estimate: when a landmark moves that estimate, the ball
+  // keeps its place relative to the robot, with its velocity and uncertainty turned too.
+  BallFilter filter;
+  RollingBall ball{300, 200, 400, -100};
+  std::mt19937 rng(6);
+  for (int frame = 0; frame < 20; ++frame) {
+    if (frame > 0) ball.advance(synthetic::kFrameS);
+    filter.predict(synthetic::kFrameS);
+    filter.update(sight(ball, rng), kRobot);
+  }
+  const api::RRCoord seen = filter.relative_to(kRobot);
+  const double speed = std::hypot(filter.velocity().x_mm, filter.velocity().y_mm);
+  const double sigma = filter.position_sigma_mm();
+  const double direction = std::atan2(filter.velocity().y_mm, filter.velocity().x_mm);
+  const Pose2D corrected{kRobot.x_mm + 150.f, kRobot.y_mm - 80.f, kRobot.theta_rad + 0.4f};
+  filter.move_with(kRobot, corrected);
+  const api::RRCoord after = filter.relative_to(corrected);
+  EXPECT_NEAR(after.distance, seen.distance, 1e-3f);
+  EXPECT_NEAR(after.heading, seen.heading, 1e-5f);
+  EXPECT_NEAR(std::hypot(filter.velocity().x_mm, filter.velocity().y_mm), speed, 1e-6);
+  EXPECT_NEAR(filter.position_sigma_mm(), sigma, 1e-6);
+  // Its direction on the field turned with the robot's heading.
+  EXPECT_NEAR(std::atan2(filter.velocity().y_mm, filter.velocity().x_mm), direction + 0.4, 1e-5);
+}
+
+TEST(BallFilter, ABallNeverSeenStaysWhereItIsThoughtToBe) {
+  BallFilter filter;
+  filter.move_with(Pose2D{}, Pose2D{500.f, 0.f, 1.f});
+  EXPECT_EQ(filter.position().x_mm, 0.0);
+  EXPECT_EQ(filter.position().y_mm, 0.0);
+}
+
+TEST(BallFilter, OnTheFieldTheBallIsAsUncertainAsThePoseItIsSeenFrom) {
+  BallFilter filter;
   Observation o;
   o.kind = ObjectKind::kBall;
   o.distance_mm = 2000;
   const Pose2D robot{};
-  certain.update(o, robot);
-  uncertain.update(o, robot, diagonal_covariance(200, 200, 0.2));
-  EXPECT_GT(uncertain.position_sigma_mm(), 2 * certain.position_sigma_mm());
+  filter.update(o, robot);
+  const std::array<double, 4> certain = filter.field_position_covariance(robot, {});
+  const std::array<double, 16>& track = filter.covariance();
+  EXPECT_DOUBLE_EQ(certain[0], track[0]);
+  EXPECT_DOUBLE_EQ(certain[3], track[5]);
+  const std::array<double, 4> uncertain =
+      filter.field_position_covariance(robot, diagonal_covariance(200, 200, 0.2));
+  // Ahead of the robot: x by its x sigma, y by its y sigma and the heading's 0.2 rad at 2 m.
+  EXPECT_NEAR(uncertain[0], track[0] + 200.0 * 200.0, 1e-6);
+  EXPECT_NEAR(uncertain[3], track[5] + 200.0 * 200.0 + std::pow(0.2 * 2000.0, 2), 1e-6);
+  EXPECT_DOUBLE_EQ(uncertain[1], uncertain[2]);
 }
 
 } // namespace

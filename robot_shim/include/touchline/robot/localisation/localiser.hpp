@@ -1,7 +1,8 @@
 #pragma once
 // The robot's localisation, once per camera frame: the pose filter follows the walk's
 // odometry and the landmarks seen, the ball filter the ball seen from the estimated
-// pose; together they write the Blackboard's localisation sub-blackboard.
+// pose (moved with the pose when a landmark corrects it); together they write the
+// Blackboard's localisation sub-blackboard.
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -21,8 +22,8 @@ struct LocalisationDef {
 };
 
 /// Writes robotPos, ballPos, ballPosRR (the ball estimate seen from the pose estimate),
-/// ballLostCount, teamBallPos (our own ball until teammates share theirs), ballVel and the
-/// pose's and the ball's covariances.
+/// ballLostCount, teamBallPos (our own ball until teammates share theirs), ballVel, the
+/// pose's covariance and the ball's on the field (its track's and the pose's together).
 void write_localisation(const PoseFilter& pose, const BallFilter& ball, api::LocalisationBlackboard& out);
 
 class Localiser {
