@@ -8,6 +8,9 @@ OPPONENT_GOAL_X = 3000.0     # mm: the opponent goal's centre on a 6000 mm field
 OPPONENT_GOAL_Y = 0.0        # mm
 BEHIND_BALL_DIST = 200.0     # mm: robot centre to ball centre when lined up behind it
 MIN_GOAL_DIST = 1.0          # mm: closer to the goal than this, aim along +x
+GOAL_MOUTH_AIM_DIST = 400.0  # mm: a ball nearer a goal's line than this is aimed ...
+GOAL_MOUTH_HALF_WIDTH = 600.0  # mm: ... at the mouth's nearest point within this of its centre ...
+GOAL_MOUTH_AIM_DEPTH = 200.0  # mm: ... this far inside the goal
 
 
 def ballRecentlySeen(blackboard):
@@ -27,9 +30,26 @@ def pointBehindBall(ball, goalX, goalY, behind):
     return ball.x - behind * dirX, ball.y - behind * dirY, math.atan2(dirY, dirX)
 
 
+def goalMouthAim(ballX, ballY, goalX, goalY):
+    """(x, y): the goal point (goalX, goalY) on a goal line, as aimed at from a ball at (ballX,
+    ballY): the goal point itself, but within GOAL_MOUTH_AIM_DIST of that line the nearest
+    point of the mouth (within GOAL_MOUTH_HALF_WIDTH of the goal point) GOAL_MOUTH_AIM_DEPTH
+    inside the goal, moving there in proportion (all of the way at the line), so the aim never
+    jumps. A ball in the mouth on the line was aimed at the goal's centre, along the line, and
+    the spot behind it was at the post: the striker stood against the post until the referee
+    restarted a stuck game. A goal point off the goal lines (a pass) is returned as it is."""
+    if abs(goalX) != FIELD_HALF_LENGTH:
+        return goalX, goalY
+    share = min(1.0, max(0.0, 1.0 - abs(goalX - ballX) / GOAL_MOUTH_AIM_DIST))
+    if share == 0.0:  # the same bits as before it, far from the line
+        return goalX, goalY
+    mouthY = min(goalY + GOAL_MOUTH_HALF_WIDTH, max(goalY - GOAL_MOUTH_HALF_WIDTH, ballY))
+    return goalX + math.copysign(GOAL_MOUTH_AIM_DEPTH * share, goalX), goalY + (mouthY - goalY) * share
+
+
 def kickAim(ballX, ballY, goalX, goalY, behind):
     """(x, y): the point to aim the ball at (ballX, ballY) at, for the goal point (goalX,
-    goalY). The goal itself, unless standing `behind` mm behind the ball facing it would put
+    goalY). The goal itself (goalMouthAim's point near the goal's line), unless standing `behind` mm behind the ball facing it would put
     the robot more than FIELD_EDGE_SLACK beyond a line (no walk takes it there: a ball on a
     line, where a ball out is put back, had strikers standing beside it until someone else
     moved it). Then the aim turns towards that line's direction just enough for the robot to
@@ -39,6 +59,7 @@ def kickAim(ballX, ballY, goalX, goalY, behind):
     touchline again, facing along the goal line with the ball beside it, never lining up:
     10 s stuck in the own corner): then it aims out of the corner, standing equally far
     beyond both lines (cornerAim)."""
+    goalX, goalY = goalMouthAim(ballX, ballY, goalX, goalY)
     dx = goalX - ballX
     dy = goalY - ballY
     dist = math.sqrt(dx * dx + dy * dy)  # as pointBehindBall: the same bits in both ports

@@ -6,7 +6,8 @@ import pytest
 import robot
 from boards import board
 
-from skills.ball import BALL_LOST_FRAMES, cornerAim, kickAim, pointBehindBall
+from skills.ball import (BALL_LOST_FRAMES, GOAL_MOUTH_AIM_DEPTH, GOAL_MOUTH_AIM_DIST, GOAL_MOUTH_HALF_WIDTH, cornerAim,
+                         goalMouthAim, kickAim, pointBehindBall)
 from skills.field import FIELD_EDGE_SLACK, FIELD_HALF_LENGTH, FIELD_HALF_WIDTH
 from skills.go_to_ball import GoToBall
 
@@ -28,6 +29,15 @@ def test_in_the_open_the_aim_is_the_goal():
     assert kickAim(0.0, 1900.0, 3000.0, 0.0, 200.0) == (3000.0, 0.0)  # behind it is still on the field
 
 
+def test_near_a_goal_line_the_aim_moves_in_proportion_to_the_mouths_nearest_point():
+    assert goalMouthAim(3000.0 - GOAL_MOUTH_AIM_DIST, -585.0, 3000.0, 0.0) == (3000.0, 0.0)
+    halfway = goalMouthAim(3000.0 - GOAL_MOUTH_AIM_DIST / 2, -585.0, 3000.0, 0.0)
+    assert halfway == pytest.approx((3000.0 + GOAL_MOUTH_AIM_DEPTH / 2, -585.0 / 2))
+    beside_the_mouth = goalMouthAim(-3000.0, 1500.0, -3000.0, 0.0)  # the other goal too
+    assert beside_the_mouth == pytest.approx((-3000.0 - GOAL_MOUTH_AIM_DEPTH, GOAL_MOUTH_HALF_WIDTH))
+    assert kickAim(900.0, 400.0, 1000.0, 500.0, 200.0) == (1000.0, 500.0)  # not a goal: as given
+
+
 def standing(ballX, ballY, aim):
     """(x, y, theta) of a robot 200 mm behind the ball at (ballX, ballY), facing the point aim."""
     return pointBehindBall(robot.AbsCoord(ballX, ballY), aim[0], aim[1], 200.0)
@@ -42,6 +52,17 @@ def test_a_ball_on_a_touchline_is_aimed_along_it_from_no_further_out_than_the_sl
     x, y, theta = standing(1000.0, -FIELD_HALF_WIDTH, kickAim(1000.0, -FIELD_HALF_WIDTH, 3000.0, 0.0, 200.0))
     assert y == pytest.approx(-FIELD_HALF_WIDTH - FIELD_EDGE_SLACK)
     assert 0.0 < theta < math.pi / 4
+
+
+def test_a_ball_in_the_mouth_on_the_goal_line_is_aimed_into_the_goal_from_clear_of_the_post():
+    # Aimed at the goal's centre, along the line, the spot behind it was at the post (3000,
+    # -700): the striker stood against the post for 28 s until the referee restarted the game.
+    ball = (FIELD_HALF_LENGTH - 10.0, -585.0)
+    x, y, theta = standing(*ball, kickAim(*ball, 3000.0, 0.0, 200.0))
+    assert abs(theta) < 0.25  # into the goal
+    # clear of the post by more than its radius (50) and a foot's reach (its corner 124 mm out)
+    assert math.hypot(x - FIELD_HALF_LENGTH, y + 700.0) > 200.0
+    assert x < FIELD_HALF_LENGTH  # on the field
 
 
 def test_a_ball_on_the_own_goal_line_is_aimed_out_to_its_goal_side():

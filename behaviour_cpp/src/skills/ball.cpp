@@ -35,7 +35,19 @@ FieldPose pointBehindBallExact(const api::AbsCoord& ball, double goalX, double g
   return {double{ball.x} - behind * dirX, double{ball.y} - behind * dirY, std::atan2(dirY, dirX)};
 }
 
+FieldPointExact goalMouthAim(double ballX, double ballY, double goalX, double goalY) {
+  if (std::abs(goalX) != double{FIELD_HALF_LENGTH}) return {goalX, goalY};
+  const double share = std::clamp(1.0 - std::abs(goalX - ballX) / double{GOAL_MOUTH_AIM_DIST}, 0.0, 1.0);
+  if (share == 0.0) return {goalX, goalY}; // the same bits as before it, far from the line
+  const double halfWidth = double{GOAL_MOUTH_HALF_WIDTH};
+  const double mouthY = std::clamp(ballY, goalY - halfWidth, goalY + halfWidth);
+  return {goalX + std::copysign(double{GOAL_MOUTH_AIM_DEPTH} * share, goalX), goalY + (mouthY - goalY) * share};
+}
+
 FieldPointExact kickAim(double ballX, double ballY, double goalX, double goalY, double behind) {
+  const FieldPointExact goal = goalMouthAim(ballX, ballY, goalX, goalY);
+  goalX = goal.x;
+  goalY = goal.y;
   const double dx = goalX - ballX;
   const double dy = goalY - ballY;
   const double dist = std::sqrt(dx * dx + dy * dy); // as pointBehindBallExact

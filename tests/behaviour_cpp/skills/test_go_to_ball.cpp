@@ -42,6 +42,21 @@ TEST(GoToBallSkill, InTheOpenTheAimIsTheGoal) {
   EXPECT_EQ(nearLine.y, 0.0);
 }
 
+TEST(GoToBallSkill, NearAGoalLineTheAimMovesInProportionToTheMouthsNearestPoint) {
+  const FieldPointExact far = goalMouthAim(3000.0 - GOAL_MOUTH_AIM_DIST, -585.0, 3000.0, 0.0);
+  EXPECT_EQ(far.x, 3000.0);
+  EXPECT_EQ(far.y, 0.0);
+  const FieldPointExact halfway = goalMouthAim(3000.0 - GOAL_MOUTH_AIM_DIST / 2, -585.0, 3000.0, 0.0);
+  EXPECT_DOUBLE_EQ(halfway.x, 3000.0 + GOAL_MOUTH_AIM_DEPTH / 2);
+  EXPECT_DOUBLE_EQ(halfway.y, -585.0 / 2);
+  const FieldPointExact besideTheMouth = goalMouthAim(-3000.0, 1500.0, -3000.0, 0.0); // the other goal too
+  EXPECT_DOUBLE_EQ(besideTheMouth.x, -3000.0 - GOAL_MOUTH_AIM_DEPTH);
+  EXPECT_DOUBLE_EQ(besideTheMouth.y, GOAL_MOUTH_HALF_WIDTH);
+  const FieldPointExact pass = kickAim(900.0, 400.0, 1000.0, 500.0, 200.0); // not a goal: as given
+  EXPECT_EQ(pass.x, 1000.0);
+  EXPECT_EQ(pass.y, 500.0);
+}
+
 namespace {
 /// Where a robot stands behind the ball at (ballX, ballY) aiming at kickAim's point.
 AbsCoord standing(float ballX, float ballY) {
@@ -61,6 +76,16 @@ TEST(GoToBallSkill, ABallOnATouchlineIsAimedAlongItFromNoFurtherOutThanTheSlack)
   EXPECT_NEAR(right.y, -FIELD_HALF_WIDTH - FIELD_EDGE_SLACK, 1e-2f);
   EXPECT_GT(right.theta, 0.f);
   EXPECT_LT(right.theta, kPi / 4);
+}
+
+TEST(GoToBallSkill, ABallInTheMouthOnTheGoalLineIsAimedIntoTheGoalFromClearOfThePost) {
+  // Aimed at the goal's centre, along the line, the spot behind it was at the post (3000,
+  // -700): the striker stood against the post for 28 s until the referee restarted the game.
+  const AbsCoord stand = standing(FIELD_HALF_LENGTH - 10.f, -585.f);
+  EXPECT_LT(std::abs(stand.theta), 0.25f); // into the goal
+  // clear of the post by more than its radius (50) and a foot's reach (its corner 124 mm out)
+  EXPECT_GT(std::hypot(stand.x - FIELD_HALF_LENGTH, stand.y + 700.f), 200.f);
+  EXPECT_LT(stand.x, FIELD_HALF_LENGTH); // on the field
 }
 
 TEST(GoToBallSkill, ABallOnTheOwnGoalLineIsAimedOutToItsGoalSide) {
