@@ -5,7 +5,11 @@ goal (or along the line a ball on it lies on: ball.py's kickAim) with small step
 The foot is chosen on the ball's side when lining up starts and kept until it ends. The aim
 may be off by KICK_FAR_ANGLE_TOLERANCE while the goal is far; while a robot (avoid.py's
 obstacles) is within CONTEST_DIST of the ball, the robot kicks at once wherever the kick
-gains ground (CONTEST_* tolerances) instead of lining up slowly under its feet. A contest in
+gains ground (CONTEST_ANGLE_TOLERANCE) instead of turning slowly under its feet, the ball
+placed as for any kick (KICK_X/Y_TOLERANCE): the swing reaches 200 mm ahead of the body
+centre (the toe 80 plus the strike's 120), so a contested kick once allowed 80 mm beyond the
+kicking spot (210) met the ball at the end of the swing, and one 70 mm off the foot's line
+with its edge: kicks that glanced off or missed. A contest in
 which the ball has not moved STALL_BALL_MOVE for STALL_FRAMES (kicks into an opponent's
 feet, the ball wedged) makes the robot step sideways round the ball, away from the nearest
 robot, for SIDESTEP_FRAMES, so the next kick has a clear line. Lining-up steps and sidesteps
@@ -47,9 +51,7 @@ KICK_ANGLE_TOLERANCE = math.radians(10)    # rad: heading error to the goal ...
 KICK_FAR_DIST = 2500.0                     # mm: ... or, the ball farther than this from it, ...
 KICK_FAR_ANGLE_TOLERANCE = 0.45            # rad: ... this (the kick still gains ground)
 CONTEST_DIST = 500.0                       # mm: an obstacle this near the ball contests it: then ...
-CONTEST_ANGLE_TOLERANCE = 1.2              # rad: ... kick this far off the goal ...
-CONTEST_X_TOLERANCE = 80.0                 # mm: ... with the ball this far off the kicking spot ...
-CONTEST_Y_TOLERANCE = 70.0                 # mm: ... and the foot's line (the swing still meets it)
+CONTEST_ANGLE_TOLERANCE = 1.2              # rad: ... kick this far off the goal
 STALL_FRAMES = 60                          # frames (2 s) contested without the ball moving ...
 STALL_BALL_MOVE = 100.0                    # mm: ... this far: then ...
 SIDESTEP_FRAMES = 30                       # frames (1 s) of stepping sideways round the ball
@@ -176,9 +178,7 @@ class LineUpAndKick:
         """Kick when the ball is in front of the foot and the goal ahead; else step closer."""
         xError = ballRR.x() - KICK_BALL_X
         yError = ballRR.y() - self.footY()
-        xTolerance = CONTEST_X_TOLERANCE if self.contested else KICK_X_TOLERANCE
-        yTolerance = CONTEST_Y_TOLERANCE if self.contested else KICK_Y_TOLERANCE
-        if abs(xError) < xTolerance and abs(yError) < yTolerance and abs(aimError) < self.aimTolerance:
+        if abs(xError) < KICK_X_TOLERANCE and abs(yError) < KICK_Y_TOLERANCE and abs(aimError) < self.aimTolerance:
             if self.dribble:
                 return actioncommand.dribble(self.power, self.foot)
             return actioncommand.kick(self.power, self.foot)

@@ -94,13 +94,14 @@ def test_a_ball_in_the_own_corner_is_lined_up_from_where_the_approach_ends():
     assert skill.liningUp
 
 
-# The goal 1.04 rad to the right, the ball 60 mm beyond the kicking spot and 50 mm off the
-# left foot's line: an approach alone, a kick at once when a robot is near the ball.
+# The goal 1.04 rad to the right, the ball 38 mm beyond the kicking spot and 38 mm off the
+# left foot's line (within a kick's tolerances): an approach alone, a kick at once when a
+# robot is near the ball.
 CONTEST_POS = (1500.0, 0.0, 0.9)
 
 
-def contest_board(**kwargs):
-    return board(CONTEST_POS, ball=relative(CONTEST_POS, 190.0, 100.0), **kwargs)
+def contest_board(ballX=168.0, ballY=88.0, **kwargs):
+    return board(CONTEST_POS, ball=relative(CONTEST_POS, ballX, ballY), **kwargs)
 
 
 def test_a_contested_ball_is_kicked_at_once_wherever_it_gains_ground():
@@ -115,6 +116,15 @@ def test_a_contested_ball_is_kicked_at_once_wherever_it_gains_ground():
     assert (body.actionType, body.foot) == (KICK, robot.Foot.LEFT)
 
 
+@pytest.mark.parametrize("ballX, ballY", [(190.0, 88.0), (168.0, 100.0)])
+def test_a_contested_kick_waits_for_the_ball_within_the_swings_reach(ballX, ballY):
+    # 60 mm beyond the kicking spot the swing (to 200 mm ahead) meets the ball at its end, and
+    # 50 mm off the foot's line with the foot's edge: a step closer first.
+    contested = LineUpAndKick()
+    assert contested.tick(contest_board(ballX, ballY, robots=[seenRobot(450.0, 120.0)])).body.actionType == WALK
+    assert contested.contested
+
+
 def test_a_stalled_contest_steps_round_the_ball_away_from_the_robot_then_kicks_again():
     skill = LineUpAndKick()
     contested = contest_board(robots=[seenRobot(450.0, 120.0)])  # left of the ball: step right
@@ -123,7 +133,7 @@ def test_a_stalled_contest_steps_round_the_ball_away_from_the_robot_then_kicks_a
     for b in bodies[1 + STALL_FRAMES:-1]:
         # turning to the ball, TURN_GAIN x its bearing
         assert (b.actionType, b.forward, b.left, b.turn) == (WALK, 0.0, pytest.approx(-LINE_UP_MAX_SPEED),
-                                                             pytest.approx(0.96895, abs=1e-4))
+                                                             pytest.approx(0.96503, abs=1e-4))
     assert bodies[-1].actionType == KICK  # then kicks again from there
 
 
@@ -131,7 +141,7 @@ def test_a_contested_ball_that_moves_starts_the_stall_count_again():
     skill = LineUpAndKick()
     for _ in range(STALL_FRAMES):
         skill.tick(contest_board(robots=[seenRobot(450.0, 120.0)]))
-    moved = board(CONTEST_POS, ball=relative(CONTEST_POS, 190.0, -10.0), robots=[seenRobot(450.0, 120.0)])  # 110 mm
+    moved = contest_board(92.0, 12.0, robots=[seenRobot(450.0, 120.0)])  # 107 mm
     assert all(skill.tick(moved).body.actionType == KICK for _ in range(STALL_FRAMES))
 
 

@@ -103,9 +103,7 @@ float LineUpAndKick::footY() const { return foot_ == ActionCommand::Foot::LEFT ?
 ActionCommand::Body LineUpAndKick::lineUp(const RRCoord& ballRR, float aimError) const {
   const float xError = ballRR.x() - KICK_BALL_X;
   const float yError = ballRR.y() - footY();
-  const float xTolerance = contested_ ? CONTEST_X_TOLERANCE : KICK_X_TOLERANCE;
-  const float yTolerance = contested_ ? CONTEST_Y_TOLERANCE : KICK_Y_TOLERANCE;
-  if (std::fabs(xError) < xTolerance && std::fabs(yError) < yTolerance && std::fabs(aimError) < aimTolerance_) {
+  if (std::fabs(xError) < KICK_X_TOLERANCE && std::fabs(yError) < KICK_Y_TOLERANCE && std::fabs(aimError) < aimTolerance_) {
     if (dribble_) return actioncommand::dribble(power_, foot_);
     return actioncommand::kick(power_, foot_);
   }

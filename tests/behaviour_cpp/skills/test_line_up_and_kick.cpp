@@ -131,11 +131,12 @@ TEST(LineUpAndKickSkill, ABallInTheOwnCornerIsLinedUpFromWhereTheApproachEnds) {
 
 namespace {
 
-// The goal 1.04 rad to the right, the ball 60 mm beyond the kicking spot and 50 mm off the
-// left foot's line: an approach alone, a kick at once when a robot is near the ball.
-Blackboard contestBoard() {
+// The goal 1.04 rad to the right, the ball 38 mm beyond the kicking spot and 38 mm off the
+// left foot's line (within a kick's tolerances): an approach alone, a kick at once when a
+// robot is near the ball.
+Blackboard contestBoard(float ballX = 168.f, float ballY = 88.f) {
   const AbsCoord pos{1500.f, 0.f, 0.9f};
-  const auto [x, y] = relative(pos, 190.f, 100.f);
+  const auto [x, y] = relative(pos, ballX, ballY);
   return board(pos, x, y);
 }
 
@@ -157,6 +158,18 @@ TEST(LineUpAndKickSkill, AContestedBallIsKickedAtOnceWhereverItGainsGround) {
   EXPECT_EQ(body.foot, Foot::LEFT);
 }
 
+TEST(LineUpAndKickSkill, AContestedKickWaitsForTheBallWithinTheSwingsReach) {
+  // 60 mm beyond the kicking spot the swing (to 200 mm ahead) meets the ball at its end, and
+  // 50 mm off the foot's line with the foot's edge: a step closer first.
+  for (const auto [ballX, ballY] : {std::pair{190.f, 88.f}, std::pair{168.f, 100.f}}) {
+    Blackboard blackboard = contestBoard(ballX, ballY);
+    blackboard.vision.robots = {seenRobot(450.f, 120.f)};
+    LineUpAndKick contested;
+    EXPECT_EQ(contested.tick(blackboard).body.actionType, ActionType::WALK) << ballX << ", " << ballY;
+    EXPECT_TRUE(contested.contested());
+  }
+}
+
 TEST(LineUpAndKickSkill, AStalledContestStepsRoundTheBallAwayFromTheRobotThenKicksAgain) {
   Blackboard blackboard = contestBoard();
   blackboard.vision.robots = {seenRobot(450.f, 120.f)}; // left of the ball: step right
@@ -166,7 +179,7 @@ TEST(LineUpAndKickSkill, AStalledContestStepsRoundTheBallAwayFromTheRobotThenKic
   for (int frame = 0; frame < SIDESTEP_FRAMES; ++frame) {
     const auto command = skill.tick(blackboard);
     EXPECT_EQ(command.body.actionType, ActionType::WALK) << frame;
-    expectVelocities(command, 0.f, -LINE_UP_MAX_SPEED, 0.96895f); // turning to the ball, TURN_GAIN x its bearing
+    expectVelocities(command, 0.f, -LINE_UP_MAX_SPEED, 0.96503f); // turning to the ball, TURN_GAIN x its bearing
   }
   EXPECT_EQ(skill.tick(blackboard).body.actionType, ActionType::KICK); // then kicks again from there
 }
@@ -177,7 +190,7 @@ TEST(LineUpAndKickSkill, AContestedBallThatMovesStartsTheStallCountAgain) {
   LineUpAndKick skill;
   for (int frame = 0; frame < STALL_FRAMES; ++frame) skill.tick(blackboard);
   const AbsCoord pos{1500.f, 0.f, 0.9f};
-  const auto [x, y] = relative(pos, 190.f, -10.f); // 110 mm from where it was
+  const auto [x, y] = relative(pos, 92.f, 12.f); // 107 mm from where it was, still at the foot
   Blackboard moved = board(pos, x, y);
   moved.vision.robots = blackboard.vision.robots;
   for (int frame = 0; frame < STALL_FRAMES; ++frame)

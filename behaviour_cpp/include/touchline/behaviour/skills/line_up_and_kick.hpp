@@ -4,8 +4,12 @@
 // (or dribble) once aligned. The foot is chosen on the ball's side when lining up starts and
 // kept until it ends. The aim may be off by KICK_FAR_ANGLE_TOLERANCE while the goal is far;
 // while a robot (avoid.hpp's obstacles) is within CONTEST_DIST of the ball, the robot kicks at
-// once wherever the kick gains ground (CONTEST_* tolerances) instead of lining up slowly under
-// its feet. A contest in which the ball has not moved STALL_BALL_MOVE for STALL_FRAMES (kicks
+// once wherever the kick gains ground (CONTEST_ANGLE_TOLERANCE) instead of turning slowly
+// under its feet, the ball placed as for any kick (KICK_X/Y_TOLERANCE): the swing reaches 200
+// mm ahead of the body centre (the toe 80 plus the strike's 120), so a contested kick once
+// allowed 80 mm beyond the kicking spot (210) met the ball at the end of the swing, and one
+// 70 mm off the foot's line with its edge: kicks that glanced off or missed (a goalie kicked
+// four times in 7 s without clearing the ball). A contest in which the ball has not moved STALL_BALL_MOVE for STALL_FRAMES (kicks
 // into an opponent's feet, the ball wedged) makes the robot step sideways round the ball, away
 // from the nearest robot, for SIDESTEP_FRAMES, so the next kick has a clear line. Lining-up
 // steps and sidesteps go through avoid's keepClear: off touched sectors (they were most of the
@@ -45,9 +49,7 @@ inline constexpr float KICK_ANGLE_TOLERANCE = 10.f * api::kPi / 180.f; ///< rad:
 inline constexpr float KICK_FAR_DIST = 2500.f;       ///< mm: ... or, the ball farther than this from it, ...
 inline constexpr float KICK_FAR_ANGLE_TOLERANCE = 0.45f; ///< rad: ... this (the kick still gains ground)
 inline constexpr float CONTEST_DIST = 500.f;         ///< mm: an obstacle this near the ball contests it: then ...
-inline constexpr float CONTEST_ANGLE_TOLERANCE = 1.2f; ///< rad: ... kick this far off the goal ...
-inline constexpr float CONTEST_X_TOLERANCE = 80.f;   ///< mm: ... with the ball this far off the kicking spot ...
-inline constexpr float CONTEST_Y_TOLERANCE = 70.f;   ///< mm: ... and the foot's line (the swing still meets it)
+inline constexpr float CONTEST_ANGLE_TOLERANCE = 1.2f; ///< rad: ... kick this far off the goal
 inline constexpr int STALL_FRAMES = 60;                ///< frames (2 s) contested without the ball moving ...
 inline constexpr float STALL_BALL_MOVE = 100.f;        ///< mm: ... this far: then ...
 inline constexpr int SIDESTEP_FRAMES = 30;             ///< frames (1 s) of stepping sideways round the ball
