@@ -1,6 +1,7 @@
 """Possession and stuck time of a played match, from its LCM event log (the launcher's
-recording). Reads the log's TL_MATCH (the field), TL_GAME (when the game is PLAYING) and
-TL_TRUTH (where every robot and the ball are); writes nothing.
+recording). Reads the log's TL_MATCH (the field), TL_GAME (when the game is PLAYING),
+TL_TRUTH (where every robot and the ball are) and TL_ACT_* (where each robot believes it and
+the ball are); writes nothing.
 
   possession: at each sample, the nearest robot within POSSESSION_MM of the ball (playing,
               not penalised, not fallen) has it; its team counts the sample.
@@ -22,10 +23,17 @@ TL_TRUTH (where every robot and the ball are); writes nothing.
               first BALL_MOVING_MM from where it was put back (the first sample after the
               event) or PLAYING ends: the time a ball that went out costs the play; its share
               of all samples is "ball_put_back_still_share".
+  ball belief: at each sample in PLAYING, for every robot within BALL_NEAR_MM of the ball
+              that saw it in its last BALL_SEEN_FRAMES frames (its TL_ACT_<team>_<player> of
+              that frame), how far the ball it believes lies from the true one, both relative
+              to the robot (its believed pose against its true pose: the error it acts on,
+              not the pose's); the median and 90th percentile over the match,
+              "ball_belief_error_median_mm" and "ball_belief_error_p90_mm" (None: no sample).
 """
 from __future__ import annotations
 
 import math
+import statistics
 from collections import Counter, defaultdict
 from pathlib import Path
 
@@ -38,17 +46,23 @@ WALL_MARGIN_MM = 250               # ...or within this of the carpet's edge: aga
 POSSESSION_MM = 300                # the nearest robot this close to the ball has it
 BALL_MOVING_MM = 100               # the ball this far from where it was 1 s before is moving:
                                    # a rolling ball or a dribble, not one wedged between feet
+BALL_NEAR_MM = 400                 # robots this near the ball count for the ball belief ...
+BALL_SEEN_FRAMES = 5               # ... if they saw it within this many frames
 
 
 def analyse_log(log: Path) -> dict:
-    """Possession samples per team, stuck seconds per team and the ball's shares (moving,
-    playing, contested), from the truth stream, on the field of the match's own TL_MATCH (the
+    """Possession samples per team, stuck seconds per team, the ball's shares (moving,
+    playing, contested, put back) and the robots' ball belief error, from the truth stream
+    and the robots' acts, on the field of the match's own TL_MATCH (the
     first message of its log). Needs the generated LCM types (build/lcm_types/gen/python) on
     sys.path; a log without TL_MATCH before its first TL_TRUTH raises ValueError."""
     import lcm
-    from touchline import game_state_t, match_config_t, match_event_t, world_truth_t
+    from touchline import act_t, game_state_t, match_config_t, match_event_t, world_truth_t
 
     playing = False
+    sampled = {}  # this sample's truth of each (team, player) and the ball, while PLAYING
+    sampled_utime = None
+    belief_errors = []
     put_back = None  # None; "out": a BALL_OUT seen, its spot not yet; (x, y): where the ball was put
     put_back_samples = 0
     possession = Counter()
@@ -74,6 +88,14 @@ def analyse_log(log: Path) -> dict:
                 put_back = "out"
             placed = placed or kind in (match_event_t.BALL_OUT, match_event_t.SET_PLAY)
             continue
+        if event.channel.startswith("TL_ACT_"):
+            act = act_t.decode(event.data)
+            truth_robot = sampled.get((act.team, act.player))
+            if act.utime == sampled_utime and truth_robot is not None:
+                error = ball_belief_error_mm(act, *truth_robot)
+                if error is not None:
+                    belief_errors.append(error)
+            continue
         if event.channel != "TL_TRUTH":
             continue
         if edge_x is None:
@@ -82,6 +104,9 @@ def analyse_log(log: Path) -> dict:
         if truth_frames % SAMPLE_EVERY:
             continue
         truth = world_truth_t.decode(event.data)
+        sampled_utime = truth.utime
+        sampled = {(r.team, r.player): (r, (truth.ball_x_mm, truth.ball_y_mm))
+                   for r in truth.robots if playing and r.active and not r.penalised}
         samples += 1
         ball_path = [*([] if placed else ball_path[-SAMPLES_PER_S:]), (truth.ball_x_mm, truth.ball_y_mm)]
         placed = False
@@ -114,7 +139,34 @@ def analyse_log(log: Path) -> dict:
             "ball_moving_share": moving_samples / samples if samples else 0.0,
             "playing_share": playing_samples / samples if samples else 0.0,
             "ball_contested_share": contested_samples / samples if samples else 0.0,
-            "ball_put_back_still_share": put_back_samples / samples if samples else 0.0}
+            "ball_put_back_still_share": put_back_samples / samples if samples else 0.0,
+            "ball_belief_error_median_mm": statistics.median(belief_errors) if belief_errors else None,
+            "ball_belief_error_p90_mm": p90(belief_errors) if belief_errors else None}
+
+
+def ball_belief_error_mm(act, robot, ball: tuple) -> float | None:
+    """How far (mm) the ball robot `act` believes lies from the true `ball` (x, y), both
+    relative to the robot: its believed ball from its believed pose against the true ball
+    from its truth `robot`. None when the robot is not within BALL_NEAR_MM of the ball or has
+    not seen it within BALL_SEEN_FRAMES frames."""
+    body = robot.body
+    if math.hypot(ball[0] - body.x_mm, ball[1] - body.y_mm) >= BALL_NEAR_MM or act.ball_lost_frames > BALL_SEEN_FRAMES:
+        return None
+    believed = relative(act.localised.x_mm, act.localised.y_mm, act.localised.theta_rad, act.ball_x_mm, act.ball_y_mm)
+    true = relative(body.x_mm, body.y_mm, body.theta_rad, *ball)
+    return math.hypot(believed[0] - true[0], believed[1] - true[1])
+
+
+def relative(x: float, y: float, theta: float, px: float, py: float) -> tuple:
+    """The field point (px, py) in the frame of a robot at (x, y) facing theta (x ahead)."""
+    c, s = math.cos(theta), math.sin(theta)
+    return (c * (px - x) + s * (py - y), -s * (px - x) + c * (py - y))
+
+
+def p90(values: list) -> float:
+    """The 90th percentile of two or more `values` (statistics' inclusive method, numpy's
+    default); of one, that value."""
+    return statistics.quantiles(values, n=10, method="inclusive")[-1] if len(values) > 1 else values[0]
 
 
 def add_sample(h: list, r, counts: bool, edge_x: float, edge_y: float) -> str | None:

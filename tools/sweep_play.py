@@ -33,6 +33,7 @@ COLUMNS = ["cell", "label", "team0", "team1", "settings", "variant", "seed", "st
            "goals0", "goals1", "goal_difference", "penalties0", "penalties1", "falls0", "falls1",
            "possession0", "possession_frames0", "possession_frames1", "stuck_s0", "stuck_s1",
            "ball_moving_share", "playing_share", "ball_contested_share", "ball_put_back_still_share",
+           "ball_belief_error_median_mm", "ball_belief_error_p90_mm",
            "localisation_worst_mm0", "localisation_worst_mm1",
            "sim_s", "wall_s", "rtf", "truth_hash", "penalty_kinds"]
 
@@ -128,11 +129,14 @@ def from_log(stats: dict) -> dict:
     """The table's columns from match_stats.analyse_log(): possession share of team 0 (empty
     when no robot had the ball), stuck seconds, the share of the match the ball moved in play, the
     share in PLAYING, the share it sat held between both teams in play and the share it lay
-    where the referee put it back after it went out."""
+    where the referee put it back after it went out, and how far robots near the ball believe
+    it from where it is (median and 90th percentile; empty without a sample)."""
     frames = stats["possession_frames"]
     share = frames[0] / sum(frames) if sum(frames) else ""
     return {"possession0": share, "possession_frames0": frames[0], "possession_frames1": frames[1],
             "stuck_s0": stats["stuck_s"][0], "stuck_s1": stats["stuck_s"][1],
             "ball_moving_share": stats["ball_moving_share"], "playing_share": stats["playing_share"],
             "ball_contested_share": stats["ball_contested_share"],
-            "ball_put_back_still_share": stats["ball_put_back_still_share"]}
+            "ball_put_back_still_share": stats["ball_put_back_still_share"],
+            **{key: "" if stats[key] is None else stats[key]
+               for key in ("ball_belief_error_median_mm", "ball_belief_error_p90_mm")}}

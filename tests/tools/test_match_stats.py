@@ -4,6 +4,8 @@ import math
 import sys
 from pathlib import Path
 
+import pytest
+
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "tools"))
 import match_stats  # noqa: E402
 
@@ -67,13 +69,15 @@ def test_a_missing_or_foreign_log_is_one_line_and_a_failure(tmp_path, capsys):
         assert err.count("\n") == 1 and err.startswith(f"match_stats: {log}: ") and reason in err, err
 
 
-def write_log(path, ball_at, robots, seconds=3.0, ball_out_frames=()):
+def write_log(path, ball_at, robots, seconds=3.0, ball_out_frames=(), beliefs=None):
     """An LCM log of a match in PLAYING: TL_MATCH, TL_GAME, then `seconds` of TL_TRUTH at 30 Hz
     with the ball at `ball_at` (a point, or a function of the frame) and `robots`
     [(team, player, x, y)] standing; the referee's BALL_OUT (TL_EVENT) before each frame of
-    `ball_out_frames`."""
+    `ball_out_frames`. With `beliefs` {(team, player): ((x, y, theta), (ball x, y), lost
+    frames)}, each frame's TL_ACT_<team>_<player> of those robots says so."""
     import lcm
-    from touchline import game_state_t, match_config_t, match_event_t, pose2d_t, robot_truth_t, world_truth_t
+    from touchline import (act_t, game_state_t, match_config_t, match_event_t, pose2d_t, robot_truth_t,
+                           world_truth_t)
     log = lcm.EventLog(str(path), "w", overwrite=True)
     match = match_config_t()
     match.field_length_mm, match.field_width_mm, match.border_mm = 6000, 4000, 700
@@ -97,6 +101,14 @@ def write_log(path, ball_at, robots, seconds=3.0, ball_out_frames=()):
             truth.robots.append(r)
         truth.num_robots = len(truth.robots)
         log.write_event(truth.utime, "TL_TRUTH", truth.encode())
+        for (team, player), (pose, ball, lost) in (beliefs or {}).items():
+            act = act_t()
+            act.utime, act.frame, act.team, act.player = truth.utime, frame, team, player
+            act.localised = pose2d_t()
+            act.localised.x_mm, act.localised.y_mm, act.localised.theta_rad = pose
+            act.ball_x_mm, act.ball_y_mm = ball
+            act.ball_lost_frames, act.team_message = lost, b""
+            log.write_event(act.utime, f"TL_ACT_{team}_{player}", act.encode())
     log.close()
 
 
@@ -133,3 +145,22 @@ def test_a_ball_put_back_is_not_moving_in_the_second_after_the_jump(tmp_path):
     write_log(tmp_path / "out.lcmlog", ball, [(0, 2, -1500.0, 1500.0)], seconds=3.0, ball_out_frames=(30,))
     stats = match_stats.analyse_log(tmp_path / "out.lcmlog")
     assert stats["ball_moving_share"] == 0.0 and stats["ball_put_back_still_share"] > 0.6
+
+
+def test_the_ball_belief_is_how_far_off_a_robot_near_it_believes_it_relative_to_itself(tmp_path):
+    # Robot 0.2 beside the ball believes itself 300 mm off and turned, and the ball where its
+    # camera puts it from there: no error. Robot 1.2 (facing away) believes the ball 50 mm
+    # further behind it; robot 0.3, lost, and robot 1.3, 1 m away, do not count.
+    ball = (0.0, 0.0)
+    robots = [(0, 2, -200.0, 0.0), (1, 2, 200.0, 0.0), (0, 3, 0.0, -300.0), (1, 3, 0.0, 1000.0)]
+    beliefs = {(0, 2): ((100.0, 0.0, math.pi / 2), (100.0, 200.0), 0),  # 200 mm ahead, as it is
+               (1, 2): ((200.0, 0.0, 0.0), (-50.0, 0.0), 2),           # 250 mm behind, not 200
+               (0, 3): ((0.0, -300.0, 0.0), (0.0, 900.0), match_stats.BALL_SEEN_FRAMES + 1),
+               (1, 3): ((0.0, 1000.0, 0.0), (0.0, 0.0), 0)}
+    write_log(tmp_path / "belief.lcmlog", ball, robots, seconds=1.0, beliefs=beliefs)
+    stats = match_stats.analyse_log(tmp_path / "belief.lcmlog")
+    assert stats["ball_belief_error_median_mm"] == pytest.approx(25.0)  # 0 and 50 mm, every sample
+    assert stats["ball_belief_error_p90_mm"] == pytest.approx(50.0)
+    write_log(tmp_path / "no_acts.lcmlog", ball, robots, seconds=1.0)
+    stats = match_stats.analyse_log(tmp_path / "no_acts.lcmlog")
+    assert stats["ball_belief_error_median_mm"] is None and stats["ball_belief_error_p90_mm"] is None
