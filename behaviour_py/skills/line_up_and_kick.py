@@ -9,10 +9,10 @@ gains ground (CONTEST_ANGLE_TOLERANCE) instead of turning slowly under its feet,
 placed as for any kick (KICK_X/Y_TOLERANCE): the swing reaches 200 mm ahead of the body
 centre (the toe 80 plus the strike's 120), so a contested kick once allowed 80 mm beyond the
 kicking spot (210) met the ball at the end of the swing, and one 70 mm off the foot's line
-with its edge: kicks that glanced off or missed. A contest in
-which the ball has not moved STALL_BALL_MOVE for STALL_FRAMES (kicks into an opponent's
-feet, the ball wedged) makes the robot step sideways round the ball, away from the nearest
-robot, for SIDESTEP_FRAMES, so the next kick has a clear line. Lining-up steps and sidesteps
+with its edge: kicks that glanced off or missed. A contest in which the ball has not moved
+STALL_BALL_MOVE for STALL_FRAMES (kicks into an opponent's feet, the ball wedged) makes the
+robot step sideways round the ball, away from the nearest robot, for SIDESTEP_FRAMES, so the
+next kick has a clear line. Lining-up steps and sidesteps
 go through avoid's keepClear: off touched sectors (they were most of the pushing fouls left
 once Avoid's walks kept off them), out of the own goal box (stepping into it while lining up
 was most of the illegal-defender calls with balls put back on the throw-in line: 16 C++

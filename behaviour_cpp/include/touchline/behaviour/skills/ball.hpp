@@ -11,7 +11,9 @@ inline constexpr float OPPONENT_GOAL_Y = 0.f;        ///< mm
 inline constexpr float BEHIND_BALL_DIST = 200.f;     ///< mm: robot centre to ball centre when lined up behind it
 inline constexpr float MIN_GOAL_DIST = 1.f;          ///< mm: closer to the goal than this, aim along +x
 inline constexpr float GOAL_MOUTH_AIM_DIST = 400.f;  ///< mm: a ball nearer a goal's line than this is aimed ...
-inline constexpr float GOAL_MOUTH_HALF_WIDTH = 600.f; ///< mm: ... at the mouth's nearest point within this of its centre (posts at 700, less their 50 mm radius, the ball's 32.5 and a margin) ...
+/// mm: ... at the mouth's nearest point within this of its centre (the posts at 700, less
+/// their 50 mm radius, the ball's 32.5 and a margin) ...
+inline constexpr float GOAL_MOUTH_HALF_WIDTH = 600.f;
 inline constexpr float GOAL_MOUTH_AIM_DEPTH = 200.f; ///< mm: ... this far inside the goal
 
 bool ballRecentlySeen(const api::Blackboard& blackboard);
@@ -36,9 +38,10 @@ struct FieldPointExact {
 FieldPointExact goalMouthAim(double ballX, double ballY, double goalX, double goalY);
 
 /// The point to aim the ball at (ballX, ballY) at, for the goal point (goalX, goalY): the
-/// goal itself (goalMouthAim's point near the goal's line), unless standing `behind` mm behind the ball facing it would put the robot
-/// more than FIELD_EDGE_SLACK beyond a line (no walk takes it there: a ball on a line, where
-/// a ball out is put back, had strikers standing beside it until someone else moved it).
+/// goal itself (goalMouthAim's point near the goal's line), unless standing `behind` mm
+/// behind the ball facing it would put the robot more than FIELD_EDGE_SLACK beyond a line
+/// (no walk takes it there: a ball on a line, where a ball out is put back, had strikers
+/// standing beside it until someone else moved it).
 /// Then the aim turns towards that line's direction just enough for the robot to stand
 /// FIELD_EDGE_SLACK beyond it, keeping its side of the goal: the point is the goal's distance
 /// away along the turned aim. The touchlines first, then the goal lines. Near a corner no aim
