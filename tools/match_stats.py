@@ -60,7 +60,8 @@ def analyse_log(log: Path) -> dict:
     from touchline import act_t, game_state_t, match_config_t, match_event_t, world_truth_t
 
     playing = False
-    sampled = {}  # this sample's truth of each (team, player) and the ball, while PLAYING
+    sampled = {}  # this sample's truth of each (team, player) in play, while PLAYING
+    sampled_ball = None  # this sample's ball (x, y)
     sampled_utime = None
     belief_errors = []
     put_back = None  # None; "out": a BALL_OUT seen, its spot not yet; (x, y): where the ball was put
@@ -92,7 +93,7 @@ def analyse_log(log: Path) -> dict:
             act = act_t.decode(event.data)
             truth_robot = sampled.get((act.team, act.player))
             if act.utime == sampled_utime and truth_robot is not None:
-                error = ball_belief_error_mm(act, *truth_robot)
+                error = ball_belief_error_mm(act, truth_robot, sampled_ball)
                 if error is not None:
                     belief_errors.append(error)
             continue
@@ -105,8 +106,8 @@ def analyse_log(log: Path) -> dict:
             continue
         truth = world_truth_t.decode(event.data)
         sampled_utime = truth.utime
-        sampled = {(r.team, r.player): (r, (truth.ball_x_mm, truth.ball_y_mm))
-                   for r in truth.robots if playing and r.active and not r.penalised}
+        sampled_ball = (truth.ball_x_mm, truth.ball_y_mm)
+        sampled = {(r.team, r.player): r for r in truth.robots if playing and r.active and not r.penalised}
         samples += 1
         ball_path = [*([] if placed else ball_path[-SAMPLES_PER_S:]), (truth.ball_x_mm, truth.ball_y_mm)]
         placed = False
