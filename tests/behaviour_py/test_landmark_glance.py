@@ -10,9 +10,10 @@ from skills.ball import BALL_LOST_FRAMES
 from skills.camera import pitchToSee
 from skills.head_scan import SCAN_YAW_STEP
 from skills.look_for_ball import LookForBall
-from skills.landmark_glance import (GLANCE_DWELL_FRAMES, GLANCE_EVERY_FRAMES, GLANCE_HOT_BALL_DIST, GLANCE_MAX_DIST,
+from skills.landmark_glance import (GLANCE_DWELL_FRAMES, GLANCE_EVERY_FRAMES, GLANCE_HOT_BALL_DIST, GLANCE_LOST_SIGMA_MM,
+                                    GLANCE_MAX_DIST,
                                     GLANCE_MAX_FRAMES, GLANCE_SIGMA_MM, GLANCE_SIGMA_RAD, GLANCE_UNSURE_EVERY_FRAMES,
-                                    LandmarkGlance, glanceTarget, landmarks, poseUnsure)
+                                    LandmarkGlance, glanceTarget, landmarks, poseLost, poseUnsure)
 
 CENTRE = (0.0, 0.0, 0.0)
 POST_YAW = math.atan2(700.0, 3000.0)  # team 1's left post (3000, 700) from the centre spot
@@ -109,6 +110,21 @@ def test_a_hot_ball_keeps_the_head_and_ends_a_glance():
     skill = LandmarkGlance()
     assert yaws(skill, with_covariance(ball_at(1000.0, 0.5)), GLANCE_EVERY_FRAMES)[-1] == pytest.approx(POST_YAW)
     assert skill.tick(hot).head.yaw == pytest.approx(0.5, abs=1e-5)
+
+
+def test_the_pose_is_lost_past_its_position_sigma_only():
+    assert not poseLost(with_covariance(ball_at(1000.0, 0.0), 0.9 * GLANCE_LOST_SIGMA_MM, 3.0).localisation)
+    assert poseLost(with_covariance(ball_at(1000.0, 0.0), 1.1 * GLANCE_LOST_SIGMA_MM).localisation)
+
+
+def test_a_lost_robot_glances_even_with_the_ball_hot():
+    # Toe to toe over the ball, a blocked walk's odometry runs the pose off: only a landmark
+    # brings it back.
+    skill = LandmarkGlance()
+    hot = with_covariance(ball_at(0.9 * GLANCE_HOT_BALL_DIST, 0.5), 1.1 * GLANCE_LOST_SIGMA_MM)
+    seen = yaws(skill, hot, GLANCE_UNSURE_EVERY_FRAMES + GLANCE_MAX_FRAMES - 1)
+    assert seen[:GLANCE_UNSURE_EVERY_FRAMES - 1] == pytest.approx([0.5] * (GLANCE_UNSURE_EVERY_FRAMES - 1), abs=1e-5)
+    assert seen[GLANCE_UNSURE_EVERY_FRAMES - 1:] == pytest.approx([POST_YAW] * GLANCE_MAX_FRAMES, abs=1e-6)
 
 
 def test_a_lost_ball_is_searched_for_not_glanced_away_from():

@@ -46,10 +46,17 @@ bool poseUnsure(const LocalisationBlackboard& localisation) {
   return static_cast<double>(c[0]) + c[4] > sigmaMm * sigmaMm || static_cast<double>(c[8]) > sigmaRad * sigmaRad;
 }
 
+bool poseLost(const LocalisationBlackboard& localisation) {
+  const auto& c = localisation.robotPosCovariance;
+  const double sigmaMm = GLANCE_LOST_SIGMA_MM;
+  return static_cast<double>(c[0]) + c[4] > sigmaMm * sigmaMm;
+}
+
 ActionCommand::All LandmarkGlance::tick(const Blackboard& blackboard) {
   const LocalisationBlackboard& loc = blackboard.localisation;
   const RRCoord& ball = loc.ballPosRR;
-  const bool hot = blackboard.vision.ballSeen && blackboard.vision.ball.distance < GLANCE_HOT_BALL_DIST;
+  const bool hot =
+      blackboard.vision.ballSeen && blackboard.vision.ball.distance < GLANCE_HOT_BALL_DIST && !poseLost(loc);
   if (glancing_) {
     const std::optional<RRCoord> target = glanceTarget(loc.robotPos, ball.heading);
     if (target && !hot && glancing_ < GLANCE_MAX_FRAMES && dwell_ < GLANCE_DWELL_FRAMES) {

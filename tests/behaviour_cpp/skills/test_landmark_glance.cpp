@@ -125,6 +125,21 @@ TEST(LandmarkGlanceSkill, AHotBallKeepsTheHeadAndEndsAGlance) {
   EXPECT_NEAR(glancing.tick(hot).head.yaw, 0.5f, 1e-5f);
 }
 
+TEST(LandmarkGlanceSkill, ThePoseIsLostPastItsPositionSigmaOnly) {
+  EXPECT_FALSE(poseLost(ballAt(1000.f, 0.f, 0.9f * GLANCE_LOST_SIGMA_MM, 3.f).localisation));
+  EXPECT_TRUE(poseLost(ballAt(1000.f, 0.f, 1.1f * GLANCE_LOST_SIGMA_MM).localisation));
+}
+
+TEST(LandmarkGlanceSkill, ALostRobotGlancesEvenWithTheBallHot) {
+  // Toe to toe over the ball, a blocked walk's odometry runs the pose off: only a landmark
+  // brings it back.
+  LandmarkGlance skill;
+  const Blackboard hot = ballAt(0.9f * GLANCE_HOT_BALL_DIST, 0.5f, 1.1f * GLANCE_LOST_SIGMA_MM);
+  const std::vector<float> seen = yaws(skill, hot, GLANCE_UNSURE_EVERY_FRAMES + GLANCE_MAX_FRAMES - 1);
+  expectAll(seen, 0, GLANCE_UNSURE_EVERY_FRAMES - 1, 0.5f, 1e-5f);
+  expectAll(seen, GLANCE_UNSURE_EVERY_FRAMES - 1, seen.size(), kPostYaw, 1e-6f);
+}
+
 TEST(LandmarkGlanceSkill, ALostBallIsSearchedForNotGlancedAwayFrom) {
   LandmarkGlance skill;
   const Blackboard lost = ballAt(1000.f, 0.5f, 1.1f * GLANCE_SIGMA_MM, 0.f, false, BALL_LOST_FRAMES + 1);

@@ -8,7 +8,10 @@
 // motion.headYaw. A glance starts, while the ball is tracked and not hot (seen within
 // GLANCE_HOT_BALL_DIST), when GLANCE_EVERY_FRAMES have passed since the last one, or
 // GLANCE_UNSURE_EVERY_FRAMES once the pose's position sigma exceeds GLANCE_SIGMA_MM or its
-// heading sigma GLANCE_SIGMA_RAD. It points the head at the landmark (goal post, field
+// heading sigma GLANCE_SIGMA_RAD. A hot ball keeps the head unless the pose is lost (position
+// sigma past GLANCE_LOST_SIGMA_MM): robots toe to toe over a ball hold each other's heads on it
+// for half a minute while the walk's odometry counts the steps the blocked feet did not take
+// (2.3 m off in one match of 560). It points the head at the landmark (goal post, field
 // corner, centre-line end or penalty mark, as the camera reports them) that the estimated
 // pose places in camera range nearest the ball's bearing, holds it GLANCE_DWELL_FRAMES once
 // the head is there (GLANCE_MAX_FRAMES at most, short of the ball counting as lost), then
@@ -27,7 +30,8 @@ inline constexpr int GLANCE_EVERY_FRAMES = 150;            ///< frames (5 s) bet
 inline constexpr int GLANCE_UNSURE_EVERY_FRAMES = 45;      ///< frames (1.5 s) between glances when it is not ...
 inline constexpr float GLANCE_SIGMA_MM = 150.f;            ///< mm: ... position sigma (x, y) past this ...
 inline constexpr float GLANCE_SIGMA_RAD = 0.15f;           ///< rad: ... or its heading sigma above this
-inline constexpr float GLANCE_HOT_BALL_DIST = 600.f;       ///< mm: a ball seen this close keeps the head
+inline constexpr float GLANCE_HOT_BALL_DIST = 600.f;       ///< mm: a ball seen this close keeps the head ...
+inline constexpr float GLANCE_LOST_SIGMA_MM = 400.f;       ///< mm: ... unless the position sigma (x, y) is past this
 inline constexpr float GLANCE_MIN_DIST = 300.f;            ///< mm: landmarks closer than this are no use (bearing)
 inline constexpr float GLANCE_MAX_DIST = 3500.f;           ///< mm: nor past the camera range less a margin
 inline constexpr float GLANCE_ON_TARGET_RAD = 0.1f;        ///< rad: the head is on the landmark within this yaw
@@ -44,6 +48,8 @@ std::optional<api::RRCoord> glanceTarget(const api::AbsCoord& robotPos, float ba
 
 /// Whether the pose's covariance is past GLANCE_SIGMA_MM or GLANCE_SIGMA_RAD.
 bool poseUnsure(const api::LocalisationBlackboard& localisation);
+/// Whether the pose's position sigma (x and y together) is past GLANCE_LOST_SIGMA_MM.
+bool poseLost(const api::LocalisationBlackboard& localisation);
 
 class LandmarkGlance : public api::Behaviour {
  public:
