@@ -10,10 +10,10 @@ from skills.ball import BALL_LOST_FRAMES
 from skills.camera import pitchToSee
 from skills.head_scan import SCAN_YAW_STEP
 from skills.look_for_ball import LookForBall
-from skills.landmark_glance import (GLANCE_DWELL_FRAMES, GLANCE_EVERY_FRAMES, GLANCE_HOT_BALL_DIST, GLANCE_LOST_SIGMA_MM,
-                                    GLANCE_MAX_DIST,
-                                    GLANCE_MAX_FRAMES, GLANCE_SIGMA_MM, GLANCE_SIGMA_RAD, GLANCE_UNSURE_EVERY_FRAMES,
-                                    LandmarkGlance, glanceTarget, landmarks, poseLost, poseUnsure)
+from skills.landmark_glance import (GLANCE_DWELL_FRAMES, GLANCE_EVERY_FRAMES, GLANCE_HOT_BALL_DIST,
+                                    GLANCE_LOST_SIGMA_MM, GLANCE_MAX_DIST, GLANCE_MAX_FRAMES, GLANCE_SIGMA_MM,
+                                    GLANCE_SIGMA_RAD, GLANCE_UNSURE_EVERY_FRAMES, LandmarkGlance, glanceTarget,
+                                    landmarks, poseLost, poseUnsure)
 
 CENTRE = (0.0, 0.0, 0.0)
 POST_YAW = math.atan2(700.0, 3000.0)  # team 1's left post (3000, 700) from the centre spot
