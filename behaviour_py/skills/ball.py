@@ -52,13 +52,13 @@ def kickAim(ballX, ballY, goalX, goalY, behind):
     goalY). The goal itself (goalMouthAim's point near the goal's line), unless standing
     `behind` mm behind the ball facing it would put the robot more than FIELD_EDGE_SLACK
     beyond a line (no walk takes it there: a ball on a line, where a ball out is put back, had
-    strikers standing beside it until someone else moved it). Then the aim turns towards that line's direction just enough for the robot to
-    stand FIELD_EDGE_SLACK beyond it, keeping its side of the goal: the point is the goal's
-    distance away along the turned aim. The touchlines first, then the goal lines. Near a
-    corner no aim keeps the robot within both (turning off the goal line put it beyond the
-    touchline again, facing along the goal line with the ball beside it, never lining up:
-    10 s stuck in the own corner): then it aims out of the corner, standing equally far
-    beyond both lines (cornerAim)."""
+    strikers standing beside it until someone else moved it). Then the aim turns towards that
+    line's direction just enough for the robot to stand FIELD_EDGE_SLACK beyond it, keeping
+    its side of the goal: the point is the goal's distance away along the turned aim. The
+    touchlines first, then the goal lines. Near a corner no aim keeps the robot within both
+    (turning off the goal line put it beyond the touchline again, facing along the goal line
+    with the ball beside it, never lining up: 10 s stuck in the own corner): then it aims out
+    of the corner, standing equally far beyond both lines (cornerAim)."""
     goalX, goalY = goalMouthAim(ballX, ballY, goalX, goalY)
     dx = goalX - ballX
     dy = goalY - ballY

@@ -64,14 +64,19 @@ def glanceTarget(robotPos, ballHeading):
     return best
 
 
-def poseUnsure(localisation):
+def positionSigmaPast(localisation, sigmaMm):
+    """Whether the pose's position sigma (x and y together) is past sigmaMm."""
     c = localisation.robotPosCovariance
-    return c[0] + c[4] > GLANCE_SIGMA_MM * GLANCE_SIGMA_MM or c[8] > GLANCE_SIGMA_RAD * GLANCE_SIGMA_RAD
+    return c[0] + c[4] > sigmaMm * sigmaMm
+
+
+def poseUnsure(localisation):
+    headingVariance = localisation.robotPosCovariance[8]
+    return positionSigmaPast(localisation, GLANCE_SIGMA_MM) or headingVariance > GLANCE_SIGMA_RAD * GLANCE_SIGMA_RAD
 
 
 def poseLost(localisation):
-    c = localisation.robotPosCovariance
-    return c[0] + c[4] > GLANCE_LOST_SIGMA_MM * GLANCE_LOST_SIGMA_MM
+    return positionSigmaPast(localisation, GLANCE_LOST_SIGMA_MM)
 
 
 class LandmarkGlance:

@@ -40,17 +40,21 @@ std::optional<RRCoord> glanceTarget(const AbsCoord& robotPos, float ballHeading)
   return best;
 }
 
-bool poseUnsure(const LocalisationBlackboard& localisation) {
+namespace {
+/// Whether the pose's position sigma (x and y together) is past sigmaMm.
+bool positionSigmaPast(const LocalisationBlackboard& localisation, double sigmaMm) {
   const auto& c = localisation.robotPosCovariance;
-  const double sigmaMm = GLANCE_SIGMA_MM, sigmaRad = GLANCE_SIGMA_RAD;
-  return static_cast<double>(c[0]) + c[4] > sigmaMm * sigmaMm || static_cast<double>(c[8]) > sigmaRad * sigmaRad;
-}
-
-bool poseLost(const LocalisationBlackboard& localisation) {
-  const auto& c = localisation.robotPosCovariance;
-  const double sigmaMm = GLANCE_LOST_SIGMA_MM;
   return static_cast<double>(c[0]) + c[4] > sigmaMm * sigmaMm;
 }
+} // namespace
+
+bool poseUnsure(const LocalisationBlackboard& localisation) {
+  const double sigmaRad = GLANCE_SIGMA_RAD;
+  return positionSigmaPast(localisation, GLANCE_SIGMA_MM) ||
+         static_cast<double>(localisation.robotPosCovariance[8]) > sigmaRad * sigmaRad;
+}
+
+bool poseLost(const LocalisationBlackboard& localisation) { return positionSigmaPast(localisation, GLANCE_LOST_SIGMA_MM); }
 
 ActionCommand::All LandmarkGlance::tick(const Blackboard& blackboard) {
   const LocalisationBlackboard& loc = blackboard.localisation;
