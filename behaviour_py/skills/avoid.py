@@ -260,16 +260,21 @@ def keepOnField(pos, forward, left):
     return toRobotAxes(pos, vx, vy)
 
 
-def keepClear(blackboard, forward, left):
-    """(forward, left) off the touched sectors, out of the own goal box (all but the goalie)
-    and on the field: the last word on every walk Avoid makes. A walk that the box or a line
-    turns back onto a touched sector becomes (0, 0): waiting, not pushing."""
-    motion = blackboard.motion
-    forward, left = keepOffTouches(motion, forward, left)
+def keepInBounds(blackboard, forward, left):
+    """(forward, left) out of the own goal box (all but the goalie: keepOutOfOwnBox) and on
+    the field (keepOnField)."""
     pos = blackboard.localisation.robotPos
     if blackboard.gameController.playerNumber != GOALIE_PLAYER:
         forward, left = keepOutOfOwnBox(pos, forward, left)
-    forward, left = keepOnField(pos, forward, left)
+    return keepOnField(pos, forward, left)
+
+
+def keepClear(blackboard, forward, left):
+    """(forward, left) off the touched sectors, then keepInBounds: the last word on every walk
+    Avoid makes. A walk that the box or a line turns back onto a touched sector becomes (0, 0):
+    waiting, not pushing."""
+    motion = blackboard.motion
+    forward, left = keepInBounds(blackboard, *keepOffTouches(motion, forward, left))
     if math.hypot(forward, left) >= MIN_WALK_SPEED and closesOnTouch(touchedSectors(motion), math.atan2(left, forward)):
         return 0.0, 0.0  # the box or a line turned the walk back into a robot: wait, do not push
     return forward, left

@@ -7,7 +7,7 @@ import robot
 from boards import board, message, seenRobot
 
 from skills.avoid import (AVOID_CLEARANCE, BACK_OFF_FRAMES, BLOCKED_FRAMES, SEEN_MEMORY_US, SONAR_SIDE_Y, TOUCH_DIST,
-                          TOUCH_FRONT_BEARING, Avoid, keepOffTouches,
+                          TOUCH_FRONT_BEARING, Avoid, keepClear, keepInBounds, keepOffTouches,
                           keepOnField, keepOutOfOwnBox, obstacles, remember, steer)
 from skills.go_to_pose import GoToPose
 from skills.team_comm import ROLE_DEFENDER, TeamInfo, encodeMessage
@@ -206,6 +206,19 @@ def test_a_walk_over_a_touchline_loses_its_part_out_and_keeps_its_part_along():
     assert keepOnField(atLine, 200.0, 200.0) == pytest.approx((0.0, 200.0), abs=1e-3)  # out and along -x: only along
     assert keepOnField(atLine, -300.0, 0.0) == pytest.approx((-300.0, 0.0), abs=1e-3)  # back in
     assert keepOnField(robot.AbsCoord(0.0, 1700.0, math.pi / 2), 300.0, 0.0) == (300.0, 0.0)  # not past the slack
+
+
+def test_keep_in_bounds_keeps_the_box_and_the_lines_but_not_the_touches():
+    # Beside the own box, sidestepping towards it, an opponent against the left foot bumper:
+    # keepInBounds sends the walk round the box's front, into the robot (keepClear waits), and
+    # for the goalie leaves it as asked; at the touchline it drops the part out, as keepClear does.
+    touched = board((-2700.0, 1400.0, 0.0), player=3, touch=("FrontLeft",), utime=NOW)
+    assert keepInBounds(touched, 0.0, -200.0) == pytest.approx((200.0, 0.0), abs=1e-3)
+    assert keepClear(touched, 0.0, -200.0) == (0.0, 0.0)
+    goalie = board((-2700.0, 1400.0, 0.0), player=1, touch=("FrontLeft",), utime=NOW)
+    assert keepInBounds(goalie, 0.0, -200.0) == pytest.approx((0.0, -200.0), abs=1e-3)
+    atLine = board((0.0, 1950.0, math.pi / 2), player=3, utime=NOW)  # facing out
+    assert keepInBounds(atLine, 200.0, 200.0) == pytest.approx((0.0, 200.0), abs=1e-3)
 
 
 def test_beyond_a_goal_line_a_robot_may_only_walk_back_in():

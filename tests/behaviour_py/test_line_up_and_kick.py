@@ -9,9 +9,9 @@ from boards import board, relative, seenRobot
 from skills.ball import BALL_LOST_FRAMES, BEHIND_BALL_DIST, kickAim, pointBehindBall
 from skills.field import FIELD_EDGE_SLACK, FIELD_HALF_LENGTH, FIELD_HALF_WIDTH, OWN_BOX_FRONT_X, clampToField
 from skills.go_to_ball import GoToBall
-from skills.line_up_and_kick import (CARRY_CLOSING_GAIN, CARRY_SPEED, CONTEST_DODGE_SPEED, KICK_BALL_X,
-                                     LINE_UP_MAX_SPEED, LINE_UP_MAX_TURN, SIDESTEP_FRAMES, STALL_FRAMES, LineUpAndKick,
-                                     carrySpeed)
+from skills.line_up_and_kick import (CARRY_CLOSING_GAIN, CARRY_SPEED, CONTEST_DODGE_SPEED, CONTEST_LEAN_SPEED,
+                                     KICK_BALL_X, LINE_UP_MAX_SPEED, LINE_UP_MAX_TURN, SIDESTEP_FRAMES, STALL_FRAMES,
+                                     LineUpAndKick, carrySpeed)
 from skills.robot_limits import MAX_FORWARD
 
 ORIGIN = (0.0, 0.0, 0.0)
@@ -172,15 +172,33 @@ def test_a_carrier_walks_a_ball_on_from_an_aim_a_kicker_would_walk_round_to():
     assert carrier.liningUp
 
 
-def test_a_carrier_walks_on_past_a_robot_ahead_but_not_into_one_it_touches():
+def test_a_carrier_walks_on_past_a_robot_ahead_and_leans_into_one_it_touches():
     # A kick into a robot at the ball often rebounds (in full matches, sometimes out of the field):
-    # the carrier walks on, and stops at a touch rather than push.
+    # the carrier walks on. A robot against both foot bumpers contests the ball: the carrier leans
+    # into it at CONTEST_LEAN_SPEED rather than stop (two that stop hold the ball between them).
     ahead = board(ORIGIN, ball=(130.0, 50.0), robots=[seenRobot(550.0, 150.0)])  # 460 mm beyond the ball
     body = LineUpAndKick(carry=True).tick(ahead).body
     assert (body.actionType, body.forward) == (WALK, CARRY_SPEED)
     touching = board(ORIGIN, ball=(130.0, 50.0), touch=("FrontLeft", "FrontRight"))
+    leaning = LineUpAndKick(carry=True)
+    body = leaning.tick(touching).body
+    assert leaning.contested
+    # the ball under the body, away from the left bumper's robot
+    assert (body.actionType, body.forward) == (WALK, CONTEST_LEAN_SPEED)
+    assert body.left == pytest.approx(2.0 * 50.0 - CONTEST_DODGE_SPEED, abs=1e-3)
+    # Lining up to kick (no carry), the ball short of the foot: the step on is never into the robot.
+    short_of_foot = board(ORIGIN, ball=(250.0, 50.0), touch=("FrontLeft", "FrontRight"))
+    assert LineUpAndKick().tick(short_of_foot).body.forward <= 0.0
+
+
+def test_a_leaning_carrier_keeps_to_the_field():
+    # Lined up 40 mm beyond the touchline, turned 0.1 rad further out, a robot against both
+    # bumpers: the lean, like any carry, goes along the line, not further out.
+    pos = (0.0, FIELD_HALF_WIDTH + 40.0, 0.1)
+    touching = board(pos, ball=relative(pos, 130.0, 0.0), touch=("FrontLeft", "FrontRight"))
     body = LineUpAndKick(carry=True).tick(touching).body
-    assert body.actionType == WALK and body.forward <= 0.0
+    assert body.actionType == WALK and body.forward > 0.0
+    assert body.forward * math.sin(pos[2]) + body.left * math.cos(pos[2]) == pytest.approx(0.0, abs=1e-3)
 
 
 def test_a_contested_carrier_steps_sideways_away_from_the_robot_at_the_ball():

@@ -190,11 +190,16 @@ WalkVelocity keepOnField(const AbsCoord& pos, float forward, float left) {
   return toRobotAxes(pos, v);
 }
 
-WalkVelocity keepClear(const Blackboard& blackboard, float forward, float left) {
-  WalkVelocity v = keepOffTouches(blackboard.motion, forward, left);
+WalkVelocity keepInBounds(const Blackboard& blackboard, float forward, float left) {
   const AbsCoord& pos = blackboard.localisation.robotPos;
+  WalkVelocity v{forward, left};
   if (blackboard.gameController.playerNumber != GOALIE_PLAYER) v = keepOutOfOwnBox(pos, v.forward, v.left);
-  v = keepOnField(pos, v.forward, v.left);
+  return keepOnField(pos, v.forward, v.left);
+}
+
+WalkVelocity keepClear(const Blackboard& blackboard, float forward, float left) {
+  const WalkVelocity offTouches = keepOffTouches(blackboard.motion, forward, left);
+  const WalkVelocity v = keepInBounds(blackboard, offTouches.forward, offTouches.left);
   if (std::hypot(v.forward, v.left) >= MIN_WALK_SPEED &&
       closesOnTouch(touchedSectors(blackboard.motion), std::atan2(v.left, v.forward)))
     return {0.f, 0.f}; // the box or a line turned the walk back into a robot: wait, do not push

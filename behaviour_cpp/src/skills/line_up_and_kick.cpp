@@ -75,7 +75,10 @@ ActionCommand::All LineUpAndKick::tick(const Blackboard& blackboard) {
     const float dodge = contested_ ? awaySide * CONTEST_DODGE_SPEED : 0.f;
     const float left = clamp(LINE_UP_GAIN * ballRR.y() + dodge, -LINE_UP_MAX_SPEED, LINE_UP_MAX_SPEED);
     const float turn = clamp(TURN_GAIN * aimError, -LINE_UP_MAX_TURN, LINE_UP_MAX_TURN);
-    const WalkVelocity v = keepClear(blackboard, carrySpeed(ballRR.x()), left);
+    const float speed = carrySpeed(ballRR.x());
+    WalkVelocity v = keepClear(blackboard, speed, left);
+    const float lean = std::min(CONTEST_LEAN_SPEED, speed);
+    if (contested_ && v.forward < lean) v = keepInBounds(blackboard, lean, left); // into the contest, not away
     return actioncommand::compose({}, actioncommand::walk(v.forward, v.left, turn));
   }
   ActionCommand::Body body = lineUp(ballRR, aimError);

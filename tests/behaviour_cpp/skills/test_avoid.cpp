@@ -261,6 +261,20 @@ TEST(Avoid, AWalkTheBoxTurnsBackIntoATouchingRobotStops) {
   EXPECT_EQ(waiting.left, 0.f);
 }
 
+TEST(Avoid, KeepInBoundsKeepsTheBoxAndTheLinesButNotTheTouches) {
+  // Beside the own box, sidestepping towards it, an opponent against the left foot bumper:
+  // keepInBounds sends the walk round the box's front, into the robot (keepClear waits), and
+  // for the goalie leaves it as asked; at the touchline it drops the part out, as keepClear does.
+  Blackboard touched = sonarBoard({-2700.f, 1400.f, 0.f}, 1.f, 1.f, 3, NOW);
+  touched.motion.touchFrontLeft = true;
+  expectVelocity(keepInBounds(touched, 0.f, -200.f), 200.f, 0.f);
+  expectVelocity(keepClear(touched, 0.f, -200.f), 0.f, 0.f);
+  touched.gameController.playerNumber = 1;
+  expectVelocity(keepInBounds(touched, 0.f, -200.f), 0.f, -200.f);
+  Blackboard atLine = sonarBoard({0.f, 1950.f, kPi / 2}, 1.f, 1.f, 3, NOW); // facing out
+  expectVelocity(keepInBounds(atLine, 200.f, 200.f), 0.f, 200.f);
+}
+
 // The field
 TEST(Avoid, AWalkOverATouchlineLosesItsPartOutAndKeepsItsPartAlong) {
   const AbsCoord atLine{0.f, 1950.f, kPi / 2}; // on the +y touchline's inside, facing out

@@ -229,9 +229,10 @@ TEST(LineUpAndKickSkill, ACarrierWalksABallOnFromAnAimAKickerWouldWalkRoundTo) {
   EXPECT_TRUE(carrying.liningUp());
 }
 
-TEST(LineUpAndKickSkill, ACarrierWalksOnPastARobotAheadButNotIntoOneItTouches) {
+TEST(LineUpAndKickSkill, ACarrierWalksOnPastARobotAheadAndLeansIntoOneItTouches) {
   // A kick into a robot at the ball often rebounds (in full matches, sometimes out of the field):
-  // the carrier walks on, and stops at a touch rather than push.
+  // the carrier walks on. A robot against both foot bumpers contests the ball: the carrier leans
+  // into it at CONTEST_LEAN_SPEED rather than stop (two that stop hold the ball between them).
   Blackboard blackboard = ballAt(130.f, 50.f);
   blackboard.vision.robots = {seenRobot(550.f, 150.f)}; // 460 mm beyond the ball
   auto body = carrier().tick(blackboard).body;
@@ -239,9 +240,29 @@ TEST(LineUpAndKickSkill, ACarrierWalksOnPastARobotAheadButNotIntoOneItTouches) {
   EXPECT_EQ(body.forward, CARRY_SPEED);
   Blackboard touching = ballAt(130.f, 50.f);
   touching.motion.touchFrontLeft = touching.motion.touchFrontRight = true;
-  body = carrier().tick(touching).body;
+  LineUpAndKick leaning = carrier();
+  body = leaning.tick(touching).body;
+  EXPECT_TRUE(leaning.contested());
   EXPECT_EQ(body.actionType, ActionType::WALK);
-  EXPECT_LE(body.forward, 0.f);
+  EXPECT_EQ(body.forward, CONTEST_LEAN_SPEED);
+  EXPECT_NEAR(body.left, 2.f * 50.f - CONTEST_DODGE_SPEED, 1e-3f); // the ball under the body, away from the left bumper's robot
+  // Lining up to kick (no carry), the ball short of the foot: the step on is never into the robot.
+  Blackboard short_of_foot = ballAt(250.f, 50.f);
+  short_of_foot.motion.touchFrontLeft = short_of_foot.motion.touchFrontRight = true;
+  EXPECT_LE(LineUpAndKick().tick(short_of_foot).body.forward, 0.f);
+}
+
+TEST(LineUpAndKickSkill, ALeaningCarrierKeepsToTheField) {
+  // Lined up 40 mm beyond the touchline, turned 0.1 rad further out, a robot against both
+  // bumpers: the lean, like any carry, goes along the line, not further out.
+  const AbsCoord pos{0.f, FIELD_HALF_WIDTH + 40.f, 0.1f};
+  const auto [x, y] = relative(pos, 130.f, 0.f);
+  Blackboard touching = board(pos, x, y);
+  touching.motion.touchFrontLeft = touching.motion.touchFrontRight = true;
+  const auto body = carrier().tick(touching).body;
+  EXPECT_EQ(body.actionType, ActionType::WALK);
+  EXPECT_GT(body.forward, 0.f);
+  EXPECT_NEAR(body.forward * std::sin(pos.theta) + body.left * std::cos(pos.theta), 0.f, 1e-3f);
 }
 
 TEST(LineUpAndKickSkill, AContestedCarrierStepsSidewaysAwayFromTheRobotAtTheBall) {

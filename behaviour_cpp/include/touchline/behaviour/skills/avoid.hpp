@@ -127,8 +127,11 @@ WalkVelocity keepOutOfOwnBox(const api::AbsCoord& pos, float forward, float left
 /// (forward, left) less its part further out over a line when within FIELD_LOOKAHEAD along it
 /// the body centre would be more than FIELD_EDGE_SLACK beyond that line.
 WalkVelocity keepOnField(const api::AbsCoord& pos, float forward, float left);
-/// (forward, left) off the touched sectors, out of the own goal box (all but the goalie) and
-/// on the field: the last word on every walk Avoid makes. A walk that the box or a line turns
+/// (forward, left) out of the own goal box (all but the goalie: keepOutOfOwnBox) and on the
+/// field (keepOnField).
+WalkVelocity keepInBounds(const api::Blackboard& blackboard, float forward, float left);
+/// (forward, left) off the touched sectors, then keepInBounds: the last word on every walk
+/// Avoid makes. A walk that the box or a line turns
 /// back onto a touched sector becomes (0, 0): waiting, not pushing.
 WalkVelocity keepClear(const api::Blackboard& blackboard, float forward, float left);
 /// The nearest obstacle within BLOCKED_OBSTACLE_DIST that the walk heads towards, if any.
