@@ -131,8 +131,8 @@ WalkVelocity keepOnField(const api::AbsCoord& pos, float forward, float left);
 /// field (keepOnField).
 WalkVelocity keepInBounds(const api::Blackboard& blackboard, float forward, float left);
 /// (forward, left) off the touched sectors, then keepInBounds: the last word on every walk
-/// Avoid makes. A walk that the box or a line turns
-/// back onto a touched sector becomes (0, 0): waiting, not pushing.
+/// Avoid makes. A walk that the box or a line turns back onto a touched sector becomes (0, 0):
+/// waiting, not pushing.
 WalkVelocity keepClear(const api::Blackboard& blackboard, float forward, float left);
 /// The nearest obstacle within BLOCKED_OBSTACLE_DIST that the walk heads towards, if any.
 std::optional<Obstacle> blocker(const std::vector<Obstacle>& found, float forward, float left);

@@ -80,10 +80,11 @@ inline constexpr float CARRY_CLOSING_GAIN = 2.f;     ///< 1/s: ... plus this per
 inline constexpr float CONTEST_DODGE_SPEED = 150.f;
 /// mm/s: a carrier in a contest that a touch would stop leans on into it at up to this (the
 /// rules call no pushing while both robots are at the ball); two that stopped at each other's
-/// feet held the ball between them (16 C++ matches on each of seeds 1-16, 17-32 and 33-48: the
-/// ball moving 55.0, 55.3 and 55.4 -> 59.5, 59.5 and 59.5 % of the play, pushing 0.2-0.6 ->
-/// 1.1-1.6 calls a team a match; at 70 mm/s 58.1 and 58.4 % on the first two, at 100 59.2 and
-/// 59.1 %, at 140 59.9 % on seeds 1-16, where the four strikers gained most on the supporters)
+/// feet held the ball between them (16 C++ matches on each of seeds 1-16, 17-32 and 33-48, with
+/// a trial build whose lean skipped keepInBounds: the ball moving 55.0, 55.3 and 55.4 -> 59.5 %
+/// of the play on each, pushing 0.2-0.6 -> 1.1-1.6 calls a team a match; at 70 mm/s 58.1 and
+/// 58.4 % on the first two, at 100 59.2 and 59.1 %, at 140 59.9 % on seeds 1-16, where the four
+/// strikers gained most on the supporters; as committed, 58.7 % on seeds 1-16)
 inline constexpr float CONTEST_LEAN_SPEED = 85.f;
 
 /// The forward speed of a carry with the ball `ballX` mm ahead of the body centre: CARRY_SPEED
