@@ -17,7 +17,6 @@ from skills.team_comm import (MESSAGE_STALE_US, NO_BALL_DISTANCE, ROLE_DEFENDER,
 
 WALK = robot.ActionType.WALK
 STAND = robot.ActionType.STAND
-KICK = robot.ActionType.KICK
 GS = robot.GameState
 
 
@@ -103,8 +102,8 @@ def test_goalie_guards_then_clears_a_ball_near_its_box():
     assert goalie.clearing
     goalie.tick(board((-2600.0, 0.0, 0.0), ball=(-1700.0, 0.0)))
     assert not goalie.clearing
-    command = Goalie().tick(board((-2600.0, 0.0, 0.0), ball=(-2470.0, 50.0)))  # lined up: kick it out
-    assert command.body.actionType == KICK
+    command = Goalie().tick(board((-2600.0, 0.0, 0.0), ball=(-2470.0, 50.0)))  # lined up: carry it out
+    assert (command.body.actionType, command.body.forward) == (WALK, CARRY_SPEED)
 
 
 # Striker

@@ -104,7 +104,9 @@ TEST(TeamGoalie, GuardsThenClearsABallNearItsBox) {
   EXPECT_TRUE(goalie.clearing());
   goalie.tick(board({-2600.f, 0.f, 0.f}, -1700.f, 0.f));
   EXPECT_FALSE(goalie.clearing());
-  EXPECT_EQ(Goalie().tick(board({-2600.f, 0.f, 0.f}, -2470.f, 50.f)).body.actionType, AT::KICK); // lined up: kick it out
+  const auto lined = Goalie().tick(board({-2600.f, 0.f, 0.f}, -2470.f, 50.f)).body; // lined up: carry it out
+  EXPECT_EQ(lined.actionType, AT::WALK);
+  EXPECT_EQ(lined.forward, CARRY_SPEED);
 }
 
 // Striker
