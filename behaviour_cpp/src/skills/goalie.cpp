@@ -32,7 +32,9 @@ bool ballNearBox(float ballX, float ballY, float margin) {
 }
 
 Goalie::Goalie()
-    : goToPose_(0.f, 0.f, 0.f, true), goHome_(GOALIE_HOME_X, 0.f, 0.f), clear_(OPPONENT_GOAL_X, OPPONENT_GOAL_Y, /*dribble=*/false, std::nullopt, std::nullopt, /*carry=*/true) {}
+    : goToPose_(0.f, 0.f, 0.f, true),
+      goHome_(GOALIE_HOME_X, 0.f, 0.f),
+      clear_(OPPONENT_GOAL_X, OPPONENT_GOAL_Y, /*dribble=*/false, std::nullopt, std::nullopt, /*carry=*/true) {}
 
 ActionCommand::All Goalie::tick(const Blackboard& blackboard) {
   if (!ballRecentlySeen(blackboard)) {
