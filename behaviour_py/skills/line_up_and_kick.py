@@ -86,7 +86,9 @@ CONTEST_LEAN_SPEED = 85.0                  # mm/s: a carrier in a contest that a
                                            # 55.4 -> 59.5 % of the play on each, pushing 0.2-0.6 -> 1.1-1.6 calls a
                                            # team a match; at 70 mm/s 58.1 and 58.4 % on the first two, at 100 59.2
                                            # and 59.1 %, at 140 59.9 % on seeds 1-16, where the four strikers gained
-                                           # most on the supporters; as committed, 58.7 % on seeds 1-16)
+                                           # most on the supporters; as committed, 58.7 % on seeds 1-16: within a
+                                           # 16-match run's spread of the trial's, as without keepInBounds again
+                                           # 59.4-59.7 % and with 150 mm of slack beyond the lines 58.7 %)
 
 
 def carrySpeed(ballX):

@@ -84,7 +84,9 @@ inline constexpr float CONTEST_DODGE_SPEED = 150.f;
 /// a trial build whose lean skipped keepInBounds: the ball moving 55.0, 55.3 and 55.4 -> 59.5 %
 /// of the play on each, pushing 0.2-0.6 -> 1.1-1.6 calls a team a match; at 70 mm/s 58.1 and
 /// 58.4 % on the first two, at 100 59.2 and 59.1 %, at 140 59.9 % on seeds 1-16, where the four
-/// strikers gained most on the supporters; as committed, 58.7 % on seeds 1-16)
+/// strikers gained most on the supporters; as committed, 58.7 % on seeds 1-16: within a
+/// 16-match run's spread of the trial's, as without keepInBounds again 59.4-59.7 % and with 150
+/// mm of slack beyond the lines 58.7 %)
 inline constexpr float CONTEST_LEAN_SPEED = 85.f;
 
 /// The forward speed of a carry with the ball `ballX` mm ahead of the body centre: CARRY_SPEED
